@@ -1,0 +1,11 @@
+// The subcommands of the polarform CLI, one registration function per cmd_*.cpp.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace polarform::cli {
+
+// Adds every subcommand to the app.
+void register_commands(CLI::App& app);
+
+}  // namespace polarform::cli
