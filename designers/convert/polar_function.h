@@ -1,0 +1,37 @@
+// PolarFunction: the converter's input — a single-valued polar function R(θ) on [start, end] with
+// exact derivatives, the angles where its smoothness may drop, and its exact B-spline form when one
+// exists (polynomial motion laws). Cam laws, follower contours and vessel profiles all reach the
+// NURBS converter through this one type.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "src/nurbs/bspline.h"
+
+namespace polarform {
+
+struct PolarFunction {
+  // Angular domain in radians; the function is closed (periodic) when end - start == 2π.
+  double start = 0.0;
+  double end = 0.0;
+  // Interior angles (increasing, strictly inside (start, end)) where a derivative may jump,
+  // e.g. motion-segment boundaries. Arc and knot breakpoints honour them.
+  std::vector<double> breakpoints;
+  // Writes R(θ), R'(θ), ..., R^(d)(θ) into out[0..d], d <= 3, exactly (no finite differences).
+  // At a breakpoint the derivatives may be taken from either side.
+  std::function<void(double theta, int d, double* out)> derivatives;
+  // An exact B-spline form of R over [start, end], when one exists; the converter then uses it
+  // instead of approximating.
+  std::optional<BSplineFunction> exact;
+
+  double operator()(double theta) const {
+    double r;
+    derivatives(theta, 0, &r);
+    return r;
+  }
+  bool closed() const;
+};
+
+}  // namespace polarform
