@@ -10,10 +10,21 @@ namespace polarform {
 
 namespace {
 
+std::string describe(tinyxml2::XMLError error) {
+  switch (error) {
+    case tinyxml2::XML_ERROR_MISMATCHED_ELEMENT: return "an element is not closed properly";
+    case tinyxml2::XML_ERROR_PARSING_ELEMENT: return "cannot parse an element";
+    case tinyxml2::XML_ERROR_PARSING_ATTRIBUTE: return "cannot parse an attribute";
+    case tinyxml2::XML_ERROR_EMPTY_DOCUMENT: return "the document is empty";
+    case tinyxml2::XML_ERROR_FILE_COULD_NOT_BE_OPENED: return "cannot open the file";
+    default: return tinyxml2::XMLDocument::ErrorIDToName(error);
+  }
+}
+
 void check_parsed(const tinyxml2::XMLDocument& doc, const std::string& file) {
   if (doc.Error())
     throw InputError(file + ":" + std::to_string(doc.ErrorLineNum()) +
-                     ": malformed XML: " + doc.ErrorStr());
+                     ": malformed XML: " + describe(doc.ErrorID()));
   if (!doc.RootElement()) throw InputError(file + ": no root element");
 }
 
