@@ -1,0 +1,14 @@
+// Escaping of user text (labels, titles, table cells) for XML and HTML output: markup characters
+// become entities, and control characters that XML 1.0 forbids become U+FFFD, so any string
+// yields a well-formed document.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace polarform {
+
+// text with & < > " ' replaced by entities; safe in element content and in attribute values.
+std::string xml_escape(std::string_view text);
+
+}  // namespace polarform
