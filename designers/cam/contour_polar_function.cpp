@@ -1,0 +1,173 @@
+#include "designers/cam/contour_polar_function.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <numbers>
+#include <vector>
+
+#include "designers/cam/message_text.h"
+#include "designers/cam/displacement_polar_function.h"
+#include "designers/cam/extremum_search.h"
+#include "src/error.h"
+
+namespace polarform {
+namespace {
+
+constexpr double kTwoPi = 2 * std::numbers::pi;
+constexpr int kTableSamples = 512;
+
+struct CurveTable {
+  PlateCam cam;
+  CamCurve curve;
+  int direction;              // sign of dψ/dθ: -σ
+  std::vector<double> theta;  // increasing, 0 .. 2π
+  std::vector<double> psi;    // unwrapped ψ(θ), monotone in `direction`
+  std::vector<int> segment;   // segment holding [theta[i], theta[i+1]]
+};
+
+// Curve point in the cam frame as jets of order d, θ in segment `seg`.
+void curve_jets(const CurveTable& t, int seg, double theta, int d, Jet* xy) {
+  Eigen::Vector2d p[4];
+  if (t.curve == CamCurve::Contour)
+    t.cam.contour_in_segment(seg, theta, d, p);
+  else
+    t.cam.pitch(theta, d, p);
+  for (int c = 0; c < 2; ++c) {
+    double v[4] = {};
+    for (int k = 0; k <= d; ++k) v[k] = p[k](c);
+    xy[c] = Jet::from(v, d);
+  }
+}
+
+// dψ/dθ = (x y' - y x') / (x² + y²).
+double psi_rate(const Jet* xy) {
+  return (xy[0][0] * xy[1][1] - xy[1][0] * xy[0][1]) / (xy[0][0] * xy[0][0] + xy[1][0] * xy[1][0]);
+}
+
+[[noreturn]] void not_single_valued(double from, double to, const char* what) {
+  throw InputError("cam " + std::string(what) + " is not single-valued in polar angle between θ = " +
+                   degrees_text(from) + " and " + degrees_text(to) +
+                   " (undercut, cusp or loop); increase the base radius or reduce the roller radius");
+}
+
+std::shared_ptr<CurveTable> build_table(const PlateCam& cam, CamCurve curve) {
+  auto t = std::make_shared<CurveTable>(CurveTable{cam, curve, -cam.sense(), {}, {}, {}});
+  const char* what = curve == CamCurve::Contour ? "contour" : "pitch curve";
+  const std::vector<MotionSegment>& segs = cam.program().segments();
+  // Margin > 0 where ψ runs the right way.
+  const auto margin = [&](int seg, double theta) {
+    Jet xy[2];
+    curve_jets(*t, seg, theta, 1, xy);
+    return t->direction * psi_rate(xy);
+  };
+  for (int s = 0; s < static_cast<int>(segs.size()); ++s) {
+    const double a = segs[s].start(), b = segs[s].end();
+    const int n = std::max(8, static_cast<int>(std::ceil(kTableSamples * (b - a) / kTwoPi)));
+    std::vector<double> thetas(n + 1), margins(n + 1), raw_psi(n + 1);
+    for (int i = 0; i <= n; ++i) {
+      thetas[i] = i == n ? b : a + (b - a) * i / n;
+      Jet xy[2];
+      curve_jets(*t, s, thetas[i], 1, xy);
+      margins[i] = t->direction * psi_rate(xy);
+      raw_psi[i] = std::atan2(xy[1][0], xy[0][0]);
+    }
+    for (int i = 0; i <= n; ++i) {
+      double bad = margins[i] <= 0 ? thetas[i] : std::numeric_limits<double>::quiet_NaN();
+      // A strict local minimum of the samples may hide a dip below zero: refine it. (Flat
+      // stretches — dwells, where the contour is a circle — carry only rounding noise.)
+      const double noise = 1e-9 * std::abs(margins[i]);
+      if (std::isnan(bad) && i > 0 && i < n && margins[i] < margins[i - 1] - noise &&
+          margins[i] < margins[i + 1] - noise) {
+        const Extremum lowest = refine_maximum([&](double x) { return -margin(s, x); }, thetas[i - 1], thetas[i + 1]);
+        if (-lowest.value <= 0) bad = lowest.theta;
+      }
+      if (!std::isnan(bad)) {
+        // Widen to the nearest samples that pass on either side, then bisect to the sign changes.
+        int lo = i, hi = i;
+        while (lo > 0 && margins[lo] <= 0) --lo;
+        while (hi < n && margins[hi] <= 0) ++hi;
+        const auto m = [&](double x) { return margin(s, x); };
+        const double from = margins[lo] > 0 ? bisect_sign_change(m, thetas[lo], bad) : thetas[lo];
+        const double to = margins[hi] > 0 ? bisect_sign_change(m, bad, thetas[hi]) : thetas[hi];
+        not_single_valued(from, to, what);
+      }
+    }
+    for (int i = s == 0 ? 0 : 1; i <= n; ++i) {
+      t->psi.push_back(t->psi.empty() ? raw_psi[i] : t->psi.back() + std::remainder(raw_psi[i] - t->psi.back(), kTwoPi));
+      t->theta.push_back(thetas[i]);
+      if (i > 0) t->segment.push_back(s);
+    }
+  }
+  const double winding = (t->psi.back() - t->psi.front()) / kTwoPi;
+  if (std::abs(winding - t->direction) > 1e-6)
+    throw InputError("cam " + std::string(what) + " winds " + number_text(winding) +
+                     " times around the cam centre over 0° to 360° instead of once; it is not single-valued in polar angle");
+  return t;
+}
+
+// θ with ψ(θ) = target inside table interval i, by Newton's method safeguarded by bisection.
+double invert(const CurveTable& t, int i, double target) {
+  double lo = t.theta[i], hi = t.theta[i + 1];
+  const double p0 = t.psi[i], p1 = t.psi[i + 1];
+  double theta = p1 == p0 ? lo : lo + (hi - lo) * (target - p0) / (p1 - p0);
+  for (int iter = 0; iter < 100; ++iter) {
+    Jet xy[2];
+    curve_jets(t, t.segment[i], theta, 1, xy);
+    const double g = p0 + std::remainder(std::atan2(xy[1][0], xy[0][0]) - p0, kTwoPi) - target;
+    if (g == 0.0) return theta;
+    (t.direction * g > 0 ? hi : lo) = theta;
+    double next = theta - g / psi_rate(xy);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (std::abs(next - theta) <= 4 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(theta)))
+      return next;
+    theta = next;
+  }
+  throw NumericalError("cam polar function: Newton inversion of ψ(θ) did not converge at ψ = " + number_text(target));
+}
+
+}  // namespace
+
+PolarFunction cam_polar_function(const PlateCam& cam, CamCurve curve) {
+  const bool radial_knife = cam.follower().kind == FollowerKind::KnifeEdge && cam.follower().offset == 0.0;
+  if (radial_knife) return displacement_polar_function(cam.program(), cam.rotation(), cam.base_radius());
+
+  std::shared_ptr<const CurveTable> table = build_table(cam, curve);
+  PolarFunction f;
+  const double psi0 = table->psi.front();  // θ = 0
+  f.start = table->direction > 0 ? psi0 : psi0 - kTwoPi;
+  f.end = f.start + kTwoPi;
+  const std::vector<MotionSegment>& segs = cam.program().segments();
+  for (std::size_t s = 1; s < segs.size(); ++s) {
+    const auto it = std::find(table->theta.begin(), table->theta.end(), segs[s].start());
+    f.breakpoints.push_back(table->psi[it - table->theta.begin()]);
+  }
+  std::sort(f.breakpoints.begin(), f.breakpoints.end());
+
+  f.derivatives = [table, start = f.start](double psi, int d, double* out) {
+    const CurveTable& t = *table;
+    // The domain [start, start + 2π] is the table's range; reduce periodically into it.
+    psi -= kTwoPi * std::floor((psi - start) / kTwoPi);
+    const auto before = [&](double a, double b) { return t.direction > 0 ? a < b : a > b; };
+    const auto it = std::upper_bound(t.psi.begin(), t.psi.end(), psi, before);
+    const int i = std::clamp(static_cast<int>(it - t.psi.begin()) - 1, 0, static_cast<int>(t.psi.size()) - 2);
+    const double theta = invert(t, i, psi);
+
+    // r and ψ as functions of θ, then the inverse-function rule for R(ψ) (Faà di Bruno).
+    Jet xy[2];
+    curve_jets(t, t.segment[i], theta, d, xy);
+    const Jet r = sqrt(xy[0] * xy[0] + xy[1] * xy[1]);
+    out[0] = r[0];
+    if (d == 0) return;
+    const Jet rate = (xy[0] * xy[1].derivative() - xy[1] * xy[0].derivative()) / (xy[0] * xy[0] + xy[1] * xy[1]);
+    const double p1 = rate[0], p2 = d > 1 ? rate[1] : 0.0, p3 = d > 2 ? rate[2] : 0.0;
+    const double t1 = 1.0 / p1, t2 = -p2 * t1 * t1 * t1, t3 = (3 * p2 * p2 - p1 * p3) * std::pow(t1, 5);
+    out[1] = r[1] * t1;
+    if (d > 1) out[2] = r[2] * t1 * t1 + r[1] * t2;
+    if (d > 2) out[3] = r[3] * t1 * t1 * t1 + 3 * r[2] * t1 * t2 + r[1] * t3;
+  };
+  return f;
+}
+
+}  // namespace polarform

@@ -1,0 +1,39 @@
+// Motion laws of a cam segment: the six standard normalised laws with exact closed forms, and the
+// two synthesised kinds (Hermite polynomial, smoothest constrained B-spline) that meet arbitrary
+// endpoint constraints. Names are the spellings used in project files and on the command line.
+// Normalised law: x = θ/β in [0, 1], S(0) = 0, S(1) = 1; derivatives are with respect to x.
+#pragma once
+
+#include <optional>
+#include <string_view>
+
+#include "designers/cam/polynomial.h"
+
+namespace polarform {
+
+enum class MotionLaw {
+  SimpleHarmonic,     // "harmonic"
+  Cycloidal,          // "cycloidal"
+  ModifiedTrapezoid,  // "modified-trapezoid"
+  ModifiedSine,       // "modified-sine"
+  Polynomial345,      // "3-4-5"
+  Polynomial4567,     // "4-5-6-7"
+  Polynomial,         // "polynomial": Hermite polynomial of minimal degree for the endpoint constraints
+  BSpline,            // "bspline": smoothest B-spline meeting the endpoint constraints
+};
+
+std::string_view motion_law_name(MotionLaw law);
+// Throws InputError naming the unknown law and listing the valid names.
+MotionLaw parse_motion_law(std::string_view name);
+// The six normalised laws with fixed shape (everything but Polynomial and BSpline).
+bool is_standard_law(MotionLaw law);
+
+// S(x), S'(x), ..., S^(d)(x) into out[0..d] for a standard law, d <= 4 (the fourth derivative
+// feeds the third polar derivative of roller and flat-faced contours). x is clamped to [0, 1].
+// Throws InputError for a law that is not standard.
+void standard_law(MotionLaw law, double x, int d, double* out);
+
+// The power-basis form of S on [0, 1] when the standard law is a polynomial (3-4-5, 4-5-6-7).
+std::optional<Polynomial> standard_law_polynomial(MotionLaw law);
+
+}  // namespace polarform

@@ -1,0 +1,128 @@
+#include "designers/cam/motion_segment.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "designers/cam/message_text.h"
+#include "designers/cam/hermite_polynomial.h"
+#include "src/error.h"
+#include "src/nurbs/basis.h"
+
+namespace polarform {
+namespace {
+
+constexpr std::array<std::string_view, 3> kKindNames = {"dwell", "rise", "return"};
+
+[[noreturn]] void fail(const SegmentSpec& spec, const std::string& why) {
+  throw InputError("segment '" + spec.name + "': " + why);
+}
+
+void validate(const SegmentSpec& spec) {
+  if (!std::isfinite(spec.start) || !std::isfinite(spec.end) || !(spec.start < spec.end))
+    fail(spec, "end angle " + degrees_text(spec.end) + " must be after start angle " + degrees_text(spec.start));
+  if (segment_kind_name(spec.kind) == "unknown") fail(spec, "unknown segment kind");
+  if (spec.kind == SegmentKind::Dwell) {
+    if (spec.lift != 0.0) fail(spec, "a dwell has no lift, got " + number_text(spec.lift) + " mm");
+    return;
+  }
+  if (!std::isfinite(spec.lift) || !(spec.lift > 0))
+    fail(spec, "lift must be a positive number of mm for a " + std::string(segment_kind_name(spec.kind)) +
+                   ", got " + number_text(spec.lift));
+  if (motion_law_name(spec.law) == "unknown") fail(spec, "unknown motion law");
+  if (spec.law == MotionLaw::Polynomial || spec.law == MotionLaw::BSpline) {
+    if (spec.constrained_order < 0 || spec.constrained_order > 3)
+      fail(spec, "constrained_order " + std::to_string(spec.constrained_order) + " outside [0, 3]");
+    for (const EndpointDerivatives& e : {spec.at_start, spec.at_end})
+      if (!std::isfinite(e.velocity) || !std::isfinite(e.acceleration) || !std::isfinite(e.jerk))
+        fail(spec, "an endpoint velocity, acceleration or jerk is not finite");
+  }
+}
+
+std::vector<double> endpoint_values(double level, const EndpointDerivatives& e, int order) {
+  const std::vector<double> all = {level, e.velocity, e.acceleration, e.jerk};
+  return std::vector<double>(all.begin(), all.begin() + order + 1);
+}
+
+// B-spline derivatives without allocation; NURBS Book A3.2 on the basis derivatives of A2.3.
+void bspline_derivatives(const BSplineFunction& f, double u, int d, double* out) {
+  const int p = f.degree(), n = f.size();
+  const Knots& U = f.knots();
+  const int span = find_span(p, U, n, u);
+  double ders[(4 + 1) * (kMaxDegree + 1)];
+  ders_basis_funs(span, u, p, d, U, ders);
+  const double* c = f.spline().coefs().data();
+  for (int k = 0; k <= d; ++k) {
+    double sum = 0.0;
+    for (int j = 0; j <= p; ++j) sum += ders[k * (p + 1) + j] * c[span - p + j];
+    out[k] = sum;
+  }
+}
+
+}  // namespace
+
+std::string_view segment_kind_name(SegmentKind kind) {
+  const auto i = static_cast<std::size_t>(kind);
+  return i < kKindNames.size() ? kKindNames[i] : "unknown";
+}
+
+SegmentKind parse_segment_kind(std::string_view name) {
+  for (std::size_t i = 0; i < kKindNames.size(); ++i)
+    if (kKindNames[i] == name) return static_cast<SegmentKind>(i);
+  throw InputError("unknown segment kind '" + std::string(name) + "'; expected one of: dwell, rise, return");
+}
+
+MotionSegment::MotionSegment(SegmentSpec spec, double start_level) : spec_(std::move(spec)), start_level_(start_level) {
+  validate(spec_);
+  const double signed_lift =
+      spec_.kind == SegmentKind::Rise ? spec_.lift : spec_.kind == SegmentKind::Return ? -spec_.lift : 0.0;
+  end_level_ = start_level_ + signed_lift;
+  if (spec_.kind == SegmentKind::Dwell) {
+    shape_ = Polynomial(spec_.start, spec_.end, {start_level_});
+  } else if (is_standard_law(spec_.law)) {
+    shape_ = StandardLaw{spec_.law, signed_lift};
+  } else {
+    const int order = spec_.constrained_order;
+    const std::vector<double> a = endpoint_values(start_level_, spec_.at_start, order);
+    const std::vector<double> b = endpoint_values(end_level_, spec_.at_end, order);
+    try {
+      if (spec_.law == MotionLaw::Polynomial)
+        shape_ = hermite_polynomial(spec_.start, spec_.end, a, b);
+      else
+        shape_ = smoothest_bspline(spec_.start, spec_.end, a, b, spec_.bspline);
+    } catch (const InputError& e) {
+      fail(spec_, e.what());
+    }
+  }
+}
+
+void MotionSegment::derivatives(double theta, int d, double* out) const {
+  if (d < 0 || d > 4) throw InputError("segment '" + spec_.name + "': derivative order " + std::to_string(d) + " outside [0, 4]");
+  theta = std::clamp(theta, spec_.start, spec_.end);
+  if (const auto* law = std::get_if<StandardLaw>(&shape_)) {
+    const double beta = spec_.end - spec_.start;
+    standard_law(law->law, (theta - spec_.start) / beta, d, out);
+    double scale = law->signed_lift;  // h / β^k
+    for (int k = 0; k <= d; ++k, scale /= beta) out[k] *= scale;
+    out[0] += start_level_;
+  } else if (const auto* poly = std::get_if<Polynomial>(&shape_)) {
+    poly->derivatives(theta, d, out);
+  } else {
+    bspline_derivatives(std::get<BSplineFunction>(shape_), theta, d, out);
+  }
+}
+
+std::optional<BSplineFunction> MotionSegment::exact() const {
+  if (const auto* law = std::get_if<StandardLaw>(&shape_)) {
+    const std::optional<Polynomial> normalised = standard_law_polynomial(law->law);
+    if (!normalised) return std::nullopt;
+    const Polynomial p =
+        Polynomial(spec_.start, spec_.end, normalised->coefficients()).affine(law->signed_lift, start_level_);
+    return p.bezier(p.degree());
+  }
+  if (const auto* poly = std::get_if<Polynomial>(&shape_)) return poly->bezier(poly->degree());
+  return std::get<BSplineFunction>(shape_);
+}
+
+}  // namespace polarform
