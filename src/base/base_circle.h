@@ -14,6 +14,8 @@ namespace polarform {
 
 class BaseCircle {
  public:
+  // An empty base (no arcs), to be assigned a real one.
+  BaseCircle() = default;
   // Arcs between breakpoints θ_0 < θ_1 < … < θ_k (radians, k >= 1), each sweep < π (rqb) or
   // <= π (quartic), total <= 2π. A total within kAngleSlack of 2π makes a closed circle (θ_k is
   // then set to θ_0 + 2π). The curve has degree 2 (rqb) or 4 (quartic) and interior knots of
@@ -59,9 +61,9 @@ class BaseCircle {
   double angle(double u) const;
 
  private:
-  ArcKind kind_;
-  AlphaRule rule_;
-  ArcParametrization param_;
+  ArcKind kind_ = ArcKind::quartic;
+  AlphaRule rule_ = AlphaRule::minimax;
+  ArcParametrization param_ = ArcParametrization::angle;
   std::vector<double> theta_;
   Knots u_;
   std::vector<double> alpha_;
