@@ -1,0 +1,19 @@
+// Text primitives shared by the exchange writers (IGES, STEP, DXF, X3D): reals written as the
+// shortest decimal that reads back to the identical double, always with a decimal point (IGES 5.3
+// and ISO 10303-21 both need one to tell a real from an integer), and UTC time
+// stamps for file headers.
+#pragma once
+
+#include <string>
+
+namespace polarform {
+
+// 1 -> "1.0", 0.25 -> "0.25", -1e-7 -> "-1.0E-07", 6.02e23 -> "6.02E+23". exponent_letter 'D'
+// marks an IGES double-precision real. Negative zero is written as "0.0". Throws InputError for
+// a non-finite value.
+std::string exchange_real(double x, char exponent_letter = 'E');
+
+// The current UTC time formatted with std::strftime, e.g. "%Y%m%d.%H%M%S".
+std::string utc_time_stamp(const char* strftime_format);
+
+}  // namespace polarform
