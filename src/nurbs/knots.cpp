@@ -51,7 +51,8 @@ int find_span(int degree, const Knots& knots, int n, double u) {
 }
 
 int multiplicity(const Knots& knots, double u) {
-  return static_cast<int>(std::count(knots.begin(), knots.end(), u));
+  const auto [first, last] = std::equal_range(knots.begin(), knots.end(), u);
+  return static_cast<int>(last - first);
 }
 
 std::vector<Breakpoint> breakpoints(const Knots& knots) {

@@ -19,7 +19,7 @@ void validate_knots(int degree, const Knots& knots, int n, std::string_view what
 // Index of the knot span [u_i, u_{i+1}) holding u, clamped to [p, n-1]; NURBS Book A2.1.
 int find_span(int degree, const Knots& knots, int n, double u);
 
-// Number of knots equal to u (exact comparison).
+// Number of knots equal to u (exact comparison; binary search, knots sorted).
 int multiplicity(const Knots& knots, double u);
 
 // Distinct knot values with their multiplicities.

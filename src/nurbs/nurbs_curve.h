@@ -17,7 +17,7 @@ class NurbsCurve {
  public:
   static_assert(Dim == 2 || Dim == 3, "NurbsCurve is 2D or 3D");
   using Point = Eigen::Matrix<double, Dim, 1>;
-  using Points = std::vector<Point, Eigen::aligned_allocator<Point>>;
+  using Points = std::vector<Point>;  // C++17 aligned new: no aligned_allocator needed
 
   NurbsCurve() = default;
   // Non-rational when weights is empty.
