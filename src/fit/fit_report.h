@@ -1,0 +1,30 @@
+// What every geometric fitter reports besides its geometry: the degrees and net of F, the
+// fairness weight, the TRUE point-to-geometry error statistics (closest-point distances) with the
+// per-point signed distances behind them (deviation maps), the parametric error along the rays,
+// and the time spent per stage.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstddef>
+
+#include "src/fit/error_stats.h"
+#include "src/fit/stage_times.h"
+
+namespace polarform {
+
+struct FitReport {
+  int degree_u = 0, degree_v = 0;    // of F (0 where F came out constant)
+  int size_u = 0, size_v = 0;        // F's fitted control net (distinct values when periodic)
+  int nurbs_degree_u = 0, nurbs_degree_v = 0;  // of the NURBS product
+  int nurbs_size_u = 0, nurbs_size_v = 0;
+  double lambda = 0.0;               // fairness weight used
+  double dof = -1.0;                 // effective parameters (gcv only)
+  int refinements = 0;               // knot-refinement rounds for a tolerance
+  ErrorStats error;                  // |closest-point distance|
+  ErrorStats radial;                 // |ρ_k − F(u_k, v_k)| along the rays (parametric error)
+  Eigen::VectorXd signed_distance;   // per input point, positive outside (away from centre/axis)
+  std::size_t unconverged = 0;       // closest-point searches that hit their iteration limit
+  StageTimes times;
+};
+
+}  // namespace polarform

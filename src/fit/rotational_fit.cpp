@@ -1,0 +1,119 @@
+#include "src/fit/rotational_fit.h"
+
+#include <exception>
+#include <sstream>
+
+#include "src/error.h"
+#include "src/fit/quadric_fit.h"
+
+namespace polarform {
+
+std::string to_string(FitMethod m) { return m == FitMethod::spherical ? "spherical" : "cylindrical"; }
+
+const NurbsSurface& RotationalFit::surface() const {
+  return method == FitMethod::spherical ? spherical->surface : cylindrical->surface;
+}
+const FitReport& RotationalFit::report() const {
+  return method == FitMethod::spherical ? spherical->report : cylindrical->report;
+}
+const FrameEstimate& RotationalFit::frame() const {
+  return method == FitMethod::spherical ? spherical->frame : cylindrical->frame;
+}
+
+namespace {
+
+// One attempt: the fit, or the message of the error that stopped it.
+struct Attempt {
+  std::optional<SphericalFit> sph;
+  std::optional<CylindricalFit> cyl;
+  std::exception_ptr error;
+  std::string message;
+  bool ok() const { return sph || cyl; }
+  double rms() const { return sph ? sph->report.error.rms : cyl->report.error.rms; }
+};
+
+Attempt attempt(FitMethod m, const Eigen::Matrix3Xd& points, const RotationalFitOptions& o) {
+  Attempt a;
+  try {
+    if (m == FitMethod::spherical) a.sph = fit_spherical(points, o.spherical);
+    else a.cyl = fit_cylindrical(points, o.cylindrical);
+  } catch (const InputError& e) {
+    a.error = std::current_exception(), a.message = e.what();
+  } catch (const NumericalError& e) {
+    a.error = std::current_exception(), a.message = e.what();
+  }
+  return a;
+}
+
+RotationalFit result(FitMethod m, Attempt& a, std::string reason) {
+  RotationalFit r;
+  r.method = m;
+  r.reason = std::move(reason);
+  r.spherical = std::move(a.sph);
+  r.cylindrical = std::move(a.cyl);
+  return r;
+}
+
+FitMethod other(FitMethod m) {
+  return m == FitMethod::spherical ? FitMethod::cylindrical : FitMethod::spherical;
+}
+
+}  // namespace
+
+RotationalFit fit_rotational(const Eigen::Matrix3Xd& points, const RotationalFitOptions& o) {
+  if (o.method) {
+    Attempt a = attempt(*o.method, points, o);
+    if (!a.ok()) std::rethrow_exception(a.error);
+    return result(*o.method, a, to_string(*o.method) + " fit requested");
+  }
+  QuadricFitOptions qo = o.spherical.frame.quadric;
+  qo.threads = o.spherical.function.threads;
+  const QuadricFit q = fit_quadric(points, qo);
+  const QuadricType t = q.classification.type;
+  std::ostringstream why;
+  why.precision(4);
+  why << "best-fit quadric: " << to_string(t);
+  const bool sphere_like = t == QuadricType::real_ellipsoid;
+  const bool cylinder_like = t == QuadricType::real_elliptic_cylinder || t == QuadricType::hyperboloid_of_one_sheet;
+  if (sphere_like || cylinder_like) {
+    const FitMethod first = sphere_like ? FitMethod::spherical : FitMethod::cylindrical;
+    why << " suggests a " << to_string(first) << " fit";
+    Attempt a = attempt(first, points, o);
+    if (a.ok()) {
+      why << " (RMS distance " << a.rms() << ")";
+      return result(first, a, why.str());
+    }
+    Attempt b = attempt(other(first), points, o);
+    if (!b.ok()) std::rethrow_exception(a.error);
+    why << ", which failed (" << a.message << "); " << to_string(other(first)) << " fit instead (RMS distance "
+        << b.rms() << ")";
+    return result(other(first), b, why.str());
+  }
+  Attempt s = attempt(FitMethod::spherical, points, o), c = attempt(FitMethod::cylindrical, points, o);
+  if (!s.ok() && !c.ok()) std::rethrow_exception(s.error);
+  why << " does not decide; ";
+  if (s.ok() && c.ok()) {
+    const FitMethod m = s.rms() <= c.rms() ? FitMethod::spherical : FitMethod::cylindrical;
+    why << "RMS distance spherical " << s.rms() << ", cylindrical " << c.rms() << ": " << to_string(m);
+    return result(m, m == FitMethod::spherical ? s : c, why.str());
+  }
+  Attempt& ok = s.ok() ? s : c;
+  const FitMethod m = s.ok() ? FitMethod::spherical : FitMethod::cylindrical;
+  why << "only the " << to_string(m) << " fit succeeded (RMS distance " << ok.rms() << "; the other: "
+      << (s.ok() ? c.message : s.message) << ")";
+  return result(m, ok, why.str());
+}
+
+RotationalFit fit_rotational(const std::filesystem::path& file, const RotationalFitOptions& options,
+                             const ReadOptions& read) {
+  StageClock clock;
+  const PointCloud cloud = read_point_cloud(file, read);
+  const double t = clock.lap();
+  RotationalFit fit = fit_rotational(cloud.points, options);
+  FitReport& r = fit.method == FitMethod::spherical ? fit.spherical->report : fit.cylindrical->report;
+  r.times.read = t;
+  r.times.total += t;
+  return fit;
+}
+
+}  // namespace polarform

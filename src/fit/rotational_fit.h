@@ -1,0 +1,45 @@
+// The automatic choice between spherical and cylindrical fitting (Bae 2002, §4.3 and §4.5: sphere-
+// like parts are fitted spherically, cylinder-like ones cylindrically): from the type of the
+// best-fit quadric, and, where the type does not decide or the preferred fit fails, from the error
+// each fit actually achieves. The reason for the choice is returned with the numbers behind it.
+#pragma once
+
+#include <Eigen/Core>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "src/fit/cylindrical_fit.h"
+#include "src/fit/spherical_fit.h"
+
+namespace polarform {
+
+enum class FitMethod { spherical, cylindrical };
+std::string to_string(FitMethod method);
+
+struct RotationalFitOptions {
+  SphericalFitOptions spherical;
+  CylindricalFitOptions cylindrical;
+  std::optional<FitMethod> method;  // forces the method when given
+};
+
+struct RotationalFit {
+  FitMethod method = FitMethod::spherical;
+  std::string reason;
+  std::optional<SphericalFit> spherical;      // set when method is spherical
+  std::optional<CylindricalFit> cylindrical;  // set when method is cylindrical
+
+  const NurbsSurface& surface() const;
+  const FitReport& report() const;
+  const FrameEstimate& frame() const;
+};
+
+// Real ellipsoid → spherical; real elliptic cylinder or hyperboloid of one sheet → cylindrical;
+// cone, elliptic paraboloid, hyperboloid of two sheets → both, the smaller RMS distance wins. A
+// preferred fit that fails (not single-valued, tolerance not met) falls back to the other. Throws
+// the preferred method's error when both fail.
+RotationalFit fit_rotational(const Eigen::Matrix3Xd& points, const RotationalFitOptions& options = {});
+RotationalFit fit_rotational(const std::filesystem::path& file, const RotationalFitOptions& options = {},
+                             const ReadOptions& read = {});
+
+}  // namespace polarform

@@ -1,0 +1,92 @@
+// Spherical fitting of sphere-like clouds generated in memory (10^4, 10^5, 10^6 points, arbitrary
+// placement, noise σ = 0.05): quadric frame, synchronization, single-valuedness check, a bicubic F
+// of 40 x 40 ordinates on 2 threads, the symbolic product and the exact (closest-point) error
+// report. Counters: wall seconds per stage, process CPU seconds, RMS error, and the peak resident
+// memory of the fit.
+#include <benchmark/benchmark.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <ctime>
+#include <fstream>
+#include <map>
+#include <numbers>
+#include <random>
+#include <string>
+
+#include "src/fit/spherical_fit.h"
+
+namespace polarform {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// An oblate, three-lobed sphere-like shape of radius ~30 mm, moved and turned, with noise.
+const Eigen::Matrix3Xd& cloud(int n) {
+  static std::map<int, Eigen::Matrix3Xd> cache;
+  auto it = cache.find(n);
+  if (it != cache.end()) return it->second;
+  std::mt19937 rng(2024);
+  std::uniform_real_distribution<double> C(-1.0, 1.0), T(0.0, 2 * kPi);
+  std::normal_distribution<double> N(0.0, 0.05);
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  const Eigen::Vector3d t(120, -40, 75);
+  Eigen::Matrix3Xd p(3, n);
+  for (int k = 0; k < n; ++k) {
+    const double phi = std::acos(C(rng)), th = T(rng);
+    const double rho = 30 * (1 + 0.1 * std::pow(std::sin(phi), 3) * std::cos(3 * th)) /
+                       std::sqrt(1 + 0.3 * std::cos(phi) * std::cos(phi));
+    const Eigen::Vector3d x(rho * std::sin(phi) * std::cos(th), rho * std::sin(phi) * std::sin(th), rho * std::cos(phi));
+    p.col(k) = R * x + t + Eigen::Vector3d(N(rng), N(rng), N(rng));
+  }
+  return cache.emplace(n, std::move(p)).first->second;
+}
+
+// Peak resident set size (kB) since the last reset.
+long peak_rss_kb() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind("VmHWM:", 0) == 0) return std::stol(line.substr(6));
+  return -1;
+}
+
+void reset_peak_rss() { std::ofstream("/proc/self/clear_refs") << "5"; }
+
+void BM_SphericalFit(benchmark::State& state) {
+  const Eigen::Matrix3Xd& p = cloud(static_cast<int>(state.range(0)));
+  SphericalFitOptions o;
+  o.function.size_u = o.function.size_v = 40;
+  o.function.threads = 2;
+  StageTimes sum;
+  double rms = 0.0, cpu = 0.0;
+  long peak = 0;
+  for (auto _ : state) {
+    reset_peak_rss();
+    const std::clock_t c0 = std::clock();
+    const SphericalFit f = fit_spherical(p, o);
+    cpu += static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
+    peak = std::max(peak, peak_rss_kb());
+    const StageTimes& t = f.report.times;
+    sum.frame += t.frame, sum.sync += t.sync, sum.check += t.check, sum.knots += t.knots;
+    sum.assembly += t.assembly, sum.solve += t.solve, sum.product += t.product, sum.error += t.error;
+    rms = f.report.error.rms;
+    benchmark::DoNotOptimize(f.surface);
+  }
+  const double it = static_cast<double>(state.iterations());
+  state.counters["frame_s"] = sum.frame / it;
+  state.counters["sync_s"] = sum.sync / it;
+  state.counters["check_s"] = sum.check / it;
+  state.counters["assembly_s"] = sum.assembly / it;
+  state.counters["solve_s"] = (sum.solve + sum.knots) / it;
+  state.counters["product_s"] = sum.product / it;
+  state.counters["error_s"] = sum.error / it;
+  state.counters["rms_mm"] = rms;
+  state.counters["cpu_s"] = cpu / it;  // both threads: the work, whatever the machine's load
+  state.counters["peak_MB"] = peak / 1024.0;
+  state.counters["points_per_s"] = benchmark::Counter(state.range(0) * it, benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_SphericalFit)->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+}  // namespace polarform
