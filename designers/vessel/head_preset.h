@@ -1,0 +1,57 @@
+// The heads a vessel engineer knows — hemispherical, semi-ellipsoidal (2:1 by default) and
+// torispherical (crown and knuckle radii) — as exact meridians R(θ) on [0, π] about the head's polar
+// origin, as curvature distributions, and with the places where that curvature jumps (at the
+// junctions with the cylinder, whose meridian is straight, and at the knuckle–crown joints).
+// Sampled as curvature targets they are the input of the curvature-continuous alternative.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "designers/convert/polar_function.h"
+#include "designers/vessel/synthesis_problem.h"
+
+namespace polarform {
+
+enum class HeadKind { hemispherical, ellipsoidal, torispherical };
+
+// "hemispherical", "ellipsoidal", "torispherical" (the words of the project file).
+const char* head_kind_name(HeadKind kind);
+
+struct HeadPreset {
+  HeadKind kind = HeadKind::hemispherical;
+  double ratio = 2.0;    // ellipsoidal: cylinder radius / head depth (2 for the 2:1 head)
+  double crown = 0.0;    // torispherical: crown (dish) radius, mm
+  double knuckle = 0.0;  // torispherical: knuckle radius, mm
+
+  bool operator==(const HeadPreset&) const = default;
+};
+
+// The common torispherical heads by vessel diameter D = 2·radius: crown D, knuckle 0.06 D
+// (ASME flanged-and-dished, "100 %/6 %"), and crown 0.8 D, knuckle 0.1 D ("80 %/10 %").
+HeadPreset torispherical_100_6(double radius);
+HeadPreset torispherical_80_10(double radius);
+
+struct CurvatureJump {
+  double theta = 0.0;         // rad
+  double kappa_before = 0.0;  // 1/mm just below θ (the cylinder's 0 before θ = 0)
+  double kappa_after = 0.0;   // just above θ (the cylinder's 0 after θ = π)
+};
+
+struct HeadShape {
+  std::string name;                   // e.g. "torispherical, crown 1000 mm, knuckle 60 mm"
+  std::vector<PolarFunction> pieces;  // analytic pieces covering [0, π] in order
+  PolarFunction profile;  // all pieces as one R(θ); breakpoints at the joints and at π/2 (apex)
+  double depth = 0.0;     // R(π/2), mm: the head's height above the junction plane
+  std::vector<CurvatureJump> jumps;   // in θ order, junctions included
+};
+
+// The preset for a cylinder of `radius` (mm). Throws InputError naming the parameter unless
+// radius > 0, ratio > 0 (ellipsoidal) and 0 < knuckle < radius <= crown (torispherical: the
+// knuckle leaves the cylinder tangentially and meets a crown centred on the axis).
+HeadShape head_shape(const HeadPreset& preset, double radius);
+
+// The curvature distribution as `count` >= 1 targets at θ_k = (k + ½)π / count, weight 1.
+std::vector<CurvatureTarget> preset_targets(const HeadShape& shape, int count);
+
+}  // namespace polarform

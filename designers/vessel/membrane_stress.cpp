@@ -1,0 +1,125 @@
+#include "designers/vessel/membrane_stress.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "designers/vessel/polar_curvature.h"
+#include "src/error.h"
+#include "src/nurbs/error_text.h"
+
+namespace polarform {
+
+namespace {
+
+constexpr double kHalfPi = std::numbers::pi / 2;
+
+// ∫ √(R² + R'²) dθ over [a, b] by 4-point Gauss–Legendre (Abramowitz & Stegun 25.4.29).
+double arc_length(const PolarFunction& R, double a, double b) {
+  static const double x[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563,
+                              0.8611363115940526};
+  static const double w[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461,
+                              0.3478548451374538};
+  double sum = 0.0;
+  for (int i = 0; i < 4; ++i) {
+    double d[2];
+    R.derivatives(0.5 * (a + b) + 0.5 * (b - a) * x[i], 1, d);
+    sum += w[i] * std::hypot(d[0], d[1]);
+  }
+  return 0.5 * (b - a) * sum;
+}
+
+void check_positive(double value, const char* name, const char* unit) {
+  if (!(value > 0.0 && std::isfinite(value)))
+    throw InputError(std::string("membrane stresses: ") + name + " " + to_text(value) + " " + unit +
+                     ", expected > 0");
+}
+
+}  // namespace
+
+// r1 = 1/κ (DESIGN §4.4); r2 = x / n_x with the outward unit normal
+// n = (R' sin θ + R cos θ, R sin θ − R' cos θ) / √(R² + R'²).
+PrincipalRadii principal_radii(const PolarFunction& head, double theta) {
+  double d[3];
+  head.derivatives(theta, 2, d);
+  const double kappa1 = polar_curvature(d[0], d[1], d[2]);
+  if (theta == kHalfPi) return {kappa1, 1.0 / kappa1};
+  const double c = std::cos(theta), s = std::sin(theta);
+  return {kappa1, d[0] * c * std::hypot(d[0], d[1]) / (d[1] * s + d[0] * c)};
+}
+
+// Membrane forces of a shell of revolution under internal pressure (Timoshenko &
+// Woinowsky-Krieger, Theory of Plates and Shells, 1959, ch. 14).
+MembraneForces membrane_forces(double pressure, double kappa1, double r2) {
+  return {pressure * r2 / 2, pressure * r2 * (1 - kappa1 * r2 / 2)};
+}
+
+StressProfile membrane_stresses(const PolarFunction& head, const VesselLoad& load, int samples) {
+  check_positive(load.radius, "radius", "mm");
+  check_positive(load.length, "length", "mm");
+  check_positive(load.thickness, "thickness", "mm");
+  check_positive(load.pressure, "pressure", "MPa");
+  if (samples < 2)
+    throw InputError("membrane stresses: " + std::to_string(samples) + " samples, expected >= 2");
+
+  const auto sample = [&](double s, double theta, double rho, double z, PrincipalRadii radii,
+                          bool cylinder) {
+    const MembraneForces f = membrane_forces(load.pressure, radii.kappa1, radii.r2);
+    return StressSample{s, theta, rho, z, radii, f, f.meridional / load.thickness,
+                        f.hoop / load.thickness, cylinder};
+  };
+  StressProfile out;
+  const PrincipalRadii cylinder{0.0, load.radius};
+  out.samples.push_back(sample(-load.length / 2, 0.0, load.radius, -load.length / 2, cylinder, true));
+  out.samples.push_back(sample(0.0, 0.0, load.radius, 0.0, cylinder, true));
+  double s = 0.0;
+  for (int i = 0; i < samples; ++i) {
+    const double theta = i == samples - 1 ? kHalfPi : kHalfPi * i / (samples - 1);
+    if (i > 0) s += arc_length(head, out.samples.back().theta, theta);
+    const double r = head(theta);
+    out.samples.push_back(sample(s, theta, r * std::cos(theta), r * std::sin(theta),
+                                 principal_radii(head, theta), false));
+  }
+
+  // Runs of compressive hoop samples, their ends bisected to N_θ = 0 between grid angles.
+  const auto hoop = [&](double theta) {
+    const PrincipalRadii r = principal_radii(head, theta);
+    return membrane_forces(load.pressure, r.kappa1, r.r2).hoop;
+  };
+  const auto root = [&](double a, double b) {  // hoop(a), hoop(b) of opposite sign
+    const bool a_negative = hoop(a) < 0;
+    for (int k = 0; k < 60; ++k) {
+      const double m = 0.5 * (a + b);
+      if ((hoop(m) < 0) == a_negative)
+        a = m;
+      else
+        b = m;
+    }
+    return 0.5 * (a + b);
+  };
+  const auto head_begin = out.samples.begin() + 2;
+  for (auto it = head_begin; it != out.samples.end();) {
+    if (it->hoop_stress >= 0) {
+      ++it;
+      continue;
+    }
+    auto end = it;
+    CompressiveBand band;
+    band.min_hoop_stress = it->hoop_stress;
+    while (end != out.samples.end() && end->hoop_stress < 0) {
+      band.min_hoop_stress = std::min(band.min_hoop_stress, end->hoop_stress);
+      ++end;
+    }
+    band.theta_from = it == head_begin ? 0.0 : root((it - 1)->theta, it->theta);
+    band.theta_to = end == out.samples.end() ? kHalfPi : root((end - 1)->theta, end->theta);
+    band.s_from = it == head_begin ? 0.0
+                                   : (it - 1)->s + arc_length(head, (it - 1)->theta, band.theta_from);
+    band.s_to = (end - 1)->s + arc_length(head, (end - 1)->theta, band.theta_to);
+    out.compressive_hoop.push_back(band);
+    it = end;
+  }
+  return out;
+}
+
+}  // namespace polarform

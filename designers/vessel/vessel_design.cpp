@@ -1,0 +1,135 @@
+#include "designers/vessel/vessel_design.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "designers/vessel/polar_curvature.h"
+#include "src/error.h"
+#include "src/nurbs/error_text.h"
+
+namespace polarform {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+// Slopes (rad) below this are the solver's round-off, not a kink worth a warning.
+constexpr double kSlopeTolerance = 1e-6;
+
+std::string short_text(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", x);
+  return buf;
+}
+
+std::string degrees(double rad) { return short_text(rad * 180 / kPi) + "°"; }
+
+void check_positive(double value, const char* name, const char* unit) {
+  if (!(value > 0.0 && std::isfinite(value)))
+    throw InputError(std::string("vessel: ") + name + " " + to_text(value) + " " + unit +
+                     ", expected > 0");
+}
+
+PresetComparison compare_with_preset(const HeadPreset& preset, const VesselDesign& design,
+                                     const PolarFunction& head, const VesselLoad& load) {
+  PresetComparison out;
+  out.shape = head_shape(preset, design.radius);
+  for (const PolarFunction& piece : out.shape.pieces) {
+    const int count = std::max(1, static_cast<int>(std::ceil(360 * (piece.end - piece.start) / kPi)));
+    const std::vector<CurvatureSample> s = sample_curvature(piece, count);
+    out.curvature.insert(out.curvature.end(), s.begin(), s.end());
+  }
+  for (int i = 0; i <= 1440; ++i) {
+    const double theta = kPi * i / 1440;
+    const double deviation = std::abs(head(theta) - out.shape.profile(theta));
+    if (deviation > out.max_deviation) out.max_deviation = deviation, out.deviation_angle = theta;
+  }
+  out.stresses = membrane_stresses(out.shape.profile, load);
+  return out;
+}
+
+std::vector<std::string> warnings_for(const VesselSolution& s, const VesselDesign& design) {
+  std::vector<std::string> out;
+  if (std::abs(s.junction_radius - design.radius) > 1e-9 * design.radius)
+    out.push_back("the head meets the cylinder at R(0) = " + short_text(s.junction_radius) +
+                  " mm, not at the vessel radius " + short_text(design.radius) +
+                  " mm; the cylinder continues the head");
+  if (std::abs(s.junction_slope) > kSlopeTolerance)
+    out.push_back("the head meets the cylinder at a kink of " + degrees(s.junction_slope) +
+                  " (R'(0) = " + short_text(s.synthesis.profile.derivatives(0.0, 1)(1)) + " mm/rad)");
+  if (std::abs(s.apex_slope) > kSlopeTolerance)
+    out.push_back("the revolved head has a cone point at the apex: the meridian meets the axis at " +
+                  degrees(s.apex_slope) + " from the perpendicular (R'(90°) ≠ 0)");
+  for (const CompressiveBand& band : s.stresses.compressive_hoop)
+    out.push_back("compressive hoop stress down to " + short_text(band.min_hoop_stress) +
+                  " MPa for θ from " + degrees(band.theta_from) + " to " + degrees(band.theta_to) +
+                  " (meridian " + short_text(band.s_from) + " to " + short_text(band.s_to) + " mm)");
+  return out;
+}
+
+}  // namespace
+
+PolarFunction head_polar_function(const BSplineFunction& R) {
+  PolarFunction f;
+  f.start = 0.0;
+  f.end = kPi;
+  f.breakpoints = {kPi / 2};
+  f.derivatives = [R](double theta, int d, double* out) {
+    const Eigen::VectorXd v = R.derivatives(theta, d);
+    for (int k = 0; k <= d; ++k) out[k] = v(k);
+  };
+  f.exact = R;
+  return f;
+}
+
+std::vector<CurvatureSample> sample_curvature(const PolarFunction& f, int count) {
+  if (count < 1)
+    throw InputError("curvature samples: count " + std::to_string(count) + ", expected >= 1");
+  std::vector<CurvatureSample> out;
+  for (int i = 0; i <= count; ++i) {
+    const double theta = i == count ? f.end : f.start + (f.end - f.start) * i / count;
+    double d[3];
+    f.derivatives(theta, 2, d);
+    out.push_back({theta, polar_curvature(d[0], d[1], d[2])});
+  }
+  return out;
+}
+
+// Bae 2002, §5.2: synthesis, then the analyses of the result (and of the preset, if any).
+VesselSolution solve_vessel(const VesselDesign& design) {
+  check_positive(design.radius, "radius", "mm");
+  check_positive(design.length, "length", "mm");
+  check_positive(design.thickness, "thickness", "mm");
+  check_positive(design.pressure, "pressure", "MPa");
+  if (design.targets.empty() && !design.preset)
+    throw InputError("vessel: no curvature targets and no head preset to take them from");
+
+  SynthesisProblem problem;
+  problem.length_unit = design.radius;
+  problem.end_a = design.end_a.value_or(EndCondition::thesis_default(design.radius));
+  problem.end_b = design.end_b.value_or(EndCondition::thesis_default(design.radius));
+  problem.settings = design.synthesis;
+  problem.targets = design.targets;
+  if (problem.targets.empty())
+    problem.targets = preset_targets(head_shape(*design.preset, design.radius), design.preset_targets);
+
+  VesselSolution out;
+  out.synthesis = synthesize_profile(problem);
+  const BSplineFunction& R = out.synthesis.profile;
+  out.profile = head_polar_function(R);
+  out.curvature = sample_curvature(out.profile, 360);
+  const Eigen::VectorXd at_a = R.derivatives(0.0, 2), at_apex = R.derivatives(kPi / 2, 1);
+  out.depth = at_apex(0);
+  out.junction_radius = at_a(0);
+  out.junction_curvature = polar_curvature(at_a(0), at_a(1), at_a(2));
+  out.junction_slope = std::atan2(at_a(1), at_a(0));
+  out.apex_slope = std::atan2(at_apex(1), at_apex(0));
+  const VesselLoad load{design.radius, design.length, design.thickness, design.pressure};
+  out.stresses = membrane_stresses(out.profile, load);
+  if (design.preset) out.preset = compare_with_preset(*design.preset, design, out.profile, load);
+  out.warnings = warnings_for(out, design);
+  return out;
+}
+
+}  // namespace polarform

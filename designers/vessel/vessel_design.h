@@ -1,0 +1,76 @@
+// A pressure-vessel design and everything the vessel job needs from it before conversion: the
+// synthesised head R(θ) (Bae 2002, §5.2) as a PolarFunction for the converter, its curvature, the
+// junction and apex geometry, the membrane stresses along the meridian, and the comparison with a
+// classical preset head (its exact profile, curvature jumps and stresses). The surfaces follow from
+// the converted profile through vessel_surfaces (vessel_surfaces.h, which defines the geometry).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "designers/convert/polar_function.h"
+#include "designers/vessel/curvature_synthesis.h"
+#include "designers/vessel/head_preset.h"
+#include "designers/vessel/membrane_stress.h"
+
+namespace polarform {
+
+struct VesselDesign {
+  double radius = 0.0;     // cylinder radius, mm
+  double length = 0.0;     // cylinder length between the junctions, mm
+  double thickness = 0.0;  // wall thickness, mm
+  double pressure = 0.0;   // internal pressure, MPa
+  // Prescribed curvatures; when empty, `preset_targets` samples of the preset's distribution
+  // (the curvature-continuous alternative to the preset). With both, the preset is only compared.
+  std::vector<CurvatureTarget> targets;
+  std::optional<EndCondition> end_a;  // θ = 0; absent: EndCondition::thesis_default(radius)
+  std::optional<EndCondition> end_b;  // θ = π; the same
+  SynthesisSettings synthesis;
+  std::optional<HeadPreset> preset;
+  int preset_targets = 48;
+
+  bool operator==(const VesselDesign&) const = default;
+};
+
+struct CurvatureSample {
+  double theta = 0.0;  // rad
+  double kappa = 0.0;  // 1/mm
+};
+
+struct PresetComparison {
+  HeadShape shape;
+  std::vector<CurvatureSample> curvature;  // piece by piece: both one-sided values at every joint
+  double max_deviation = 0.0;    // max |R_design − R_preset| over 1441 angles in [0, π], mm
+  double deviation_angle = 0.0;  // rad
+  StressProfile stresses;        // of the preset head
+};
+
+struct VesselSolution {
+  SynthesisResult synthesis;
+  // R(θ) on [0, π] for the converter: exact = synthesis.profile; π/2 is a breakpoint so that the
+  // apex, where vessel_surfaces splits the converted curve, is an arc junction.
+  PolarFunction profile;
+  std::vector<CurvatureSample> curvature;  // κ(θ) at 361 equal steps over [0, π]
+  double depth = 0.0;               // R(π/2), mm
+  double junction_radius = 0.0;     // R(0), mm
+  double junction_curvature = 0.0;  // κ(0), 1/mm (the cylinder's meridian has κ = 0)
+  double junction_slope = 0.0;      // atan(R'(0)/R(0)), rad: the kink against the cylinder
+  double apex_slope = 0.0;          // atan(R'(π/2)/R(π/2)), rad: non-zero is a cone point
+  StressProfile stresses;           // of the designed head (the revolved A half) and cylinder
+  std::optional<PresetComparison> preset;
+  std::vector<std::string> warnings;  // kinks, a radius mismatch, compressive hoop bands
+};
+
+// Throws InputError for a bad design (radius, length, thickness, pressure <= 0, no targets and no
+// preset, preset_targets < 1, and whatever synthesize_profile and head_shape reject) and passes on
+// the synthesis's NumericalError.
+VesselSolution solve_vessel(const VesselDesign& design);
+
+// A B-spline R(θ) on [0, π] as the converter's input: exact, with the apex π/2 as breakpoint.
+PolarFunction head_polar_function(const BSplineFunction& R);
+
+// κ(θ) at count + 1 equal steps over [f.start, f.end] (count >= 1).
+std::vector<CurvatureSample> sample_curvature(const PolarFunction& f, int count);
+
+}  // namespace polarform

@@ -1,0 +1,58 @@
+// The vessel project file: a VesselDesign and its conversion tolerance as XML, in the file's units
+// (angles in degrees, lengths in mm, pressure in MPa, curvature as κ in 1/mm or as a radius of
+// curvature in mm). Reading names file:line:attribute for every bad value and warns about unknown
+// fields; writing is atomic, and a saved project loads back exactly.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "designers/vessel/vessel_design.h"
+
+namespace polarform {
+
+// One <curvature> element as written: theta in degrees and either kappa (1/mm) or radius (mm).
+struct CurvatureEntry {
+  double theta_deg = 0.0;
+  double value = 0.0;
+  bool is_radius = false;  // value is a radius of curvature (κ = 1/value)
+  double weight = 1.0;
+
+  bool operator==(const CurvatureEntry&) const = default;
+};
+
+struct VesselProject {
+  // The design; its `targets` are derived from `curvatures` by to_design() and not stored here.
+  VesselDesign design;
+  std::vector<CurvatureEntry> curvatures;
+  double tolerance = 1e-3;  // conversion tolerance, mm
+
+  bool operator==(const VesselProject&) const = default;
+};
+
+// The design with the curvature entries converted to radians and 1/mm.
+VesselDesign to_design(const VesselProject& project);
+
+// Reads <polarform version="1"><vessel …>…</vessel><conversion tolerance="…"/></polarform>, or a
+// bare <vessel> root:
+//   <vessel radius="mm" length="mm" thickness="mm" pressure="MPa">
+//     <curvature theta="deg" kappa="1/mm" | radius="mm" weight="1"/>…
+//     <end at="A|B" r="mm" dr="mm/rad" ddr="mm/rad²"/>   (present attributes are imposed)
+//     <head preset="hemispherical|ellipsoidal|torispherical" ratio="2" crown="mm" knuckle="mm"
+//           targets="48"/>
+//     <synthesis degree="5" ordinates="20" smoothing="1e-6" symmetric="false"
+//                max-iterations="500"/>
+//   </vessel>
+// Throws InputError "file:line: <element> attribute 'x': expected …" for bad values; appends a
+// warning for every unknown attribute or element.
+VesselProject read_vessel_project(const std::filesystem::path& file,
+                                  std::vector<std::string>& warnings);
+VesselProject parse_vessel_project(const std::string& text, const std::string& file,
+                                   std::vector<std::string>& warnings);
+
+// The project as XML (numbers in their shortest exact form) and saved atomically.
+std::string vessel_project_xml(const VesselProject& project);
+void write_vessel_project(const VesselProject& project, const std::filesystem::path& file);
+
+}  // namespace polarform

@@ -1,0 +1,115 @@
+// Membrane stresses against the closed forms: hemisphere pR/2t both ways, cylinder pR/t hoop and
+// pR/2t axial, the 2:1 ellipsoidal head's N_θ = −pR at the equator and its compressive band up to
+// where r2 = 2 r1, the torispherical knuckle's compressive hoop force.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "designers/vessel/head_preset.h"
+#include "designers/vessel/membrane_stress.h"
+#include "src/error.h"
+
+namespace polarform {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+const VesselLoad kLoad{500, 1500, 10, 2};  // R mm, L mm, t mm, p MPa
+
+TEST(MembraneStress, CylinderForces) {
+  const MembraneForces f = membrane_forces(2.0, 0.0, 500.0);
+  EXPECT_EQ(f.meridional, 500.0);  // pR/2
+  EXPECT_EQ(f.hoop, 1000.0);       // pR
+}
+
+TEST(MembraneStress, HemisphereAndCylinderAreExact) {
+  const StressProfile s = membrane_stresses(head_shape({}, 500).profile, kLoad, 91);
+  ASSERT_EQ(s.samples.size(), 93u);
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_TRUE(s.samples[i].on_cylinder);
+    EXPECT_EQ(s.samples[i].hoop_stress, 100.0);  // pR/t
+    EXPECT_EQ(s.samples[i].meridional_stress, 50.0);
+  }
+  EXPECT_EQ(s.samples[0].s, -750.0);
+  for (std::size_t i = 2; i < s.samples.size(); ++i) {
+    const StressSample& x = s.samples[i];
+    EXPECT_NEAR(x.meridional_stress, 50.0, 1e-12);  // pR/2t
+    EXPECT_NEAR(x.hoop_stress, 50.0, 1e-12);
+    EXPECT_NEAR(x.radii.r2, 500.0, 1e-10);
+    EXPECT_NEAR(x.s, 500.0 * x.theta, 1e-10);  // arc length of the circle
+  }
+  EXPECT_DOUBLE_EQ(s.samples.back().theta, kPi / 2);
+  EXPECT_NEAR(s.samples.back().z, 500.0, 1e-12);
+  EXPECT_TRUE(s.compressive_hoop.empty());
+}
+
+// Ellipse a = 500, b = 250: at the equator r1 = b²/a = 125, r2 = a, N_θ = pa(1 − a/(2 r1)) = −pa;
+// at the apex r1 = r2 = a²/b. N_θ = 0 where a² sin²φ + b² cos²φ = 2b² (φ the normal's angle to the
+// axis), i.e. at the point (a² sin φ, b² cos φ)/(√2 b): tan θ = √2/4 for the 2:1 head.
+TEST(MembraneStress, TwoToOneEllipsoidalHead) {
+  const double a = 500, b = 250, p = 2, t = 10;
+  const StressProfile s = membrane_stresses(head_shape({HeadKind::ellipsoidal, 2.0}, a).profile,
+                                            kLoad, 181);
+  const StressSample& equator = s.samples[2];
+  EXPECT_EQ(equator.theta, 0.0);
+  EXPECT_NEAR(1 / equator.radii.kappa1, b * b / a, 1e-10);
+  EXPECT_NEAR(equator.radii.r2, a, 1e-10);
+  EXPECT_NEAR(equator.forces.hoop, -p * a, 1e-9);
+  EXPECT_NEAR(equator.forces.meridional, p * a / 2, 1e-9);
+  EXPECT_NEAR(equator.hoop_stress, -p * a / t, 1e-10);
+  const StressSample& apex = s.samples.back();
+  EXPECT_NEAR(apex.radii.r2, a * a / b, 1e-9);
+  EXPECT_NEAR(apex.forces.hoop, p * a, 1e-9);
+  EXPECT_NEAR(apex.forces.meridional, p * a, 1e-9);
+
+  ASSERT_EQ(s.compressive_hoop.size(), 1u);
+  const CompressiveBand& band = s.compressive_hoop[0];
+  EXPECT_EQ(band.theta_from, 0.0);
+  EXPECT_EQ(band.s_from, 0.0);
+  EXPECT_NEAR(band.theta_to, std::atan(std::sqrt(2.0) / 4), 1e-12);
+  EXPECT_NEAR(band.min_hoop_stress, -p * a / t, 1e-10);
+  // Arc length from the equator to the band end, with the ellipse's own parameter (Simpson).
+  const double t_end = std::acos(std::sqrt(2.0 / 3.0));
+  const int n = 2000;
+  double integral = 0.0;
+  for (int i = 0; i <= n; ++i) {
+    const double u = t_end * i / n, w = (i == 0 || i == n) ? 1 : (i % 2 ? 4 : 2);
+    integral += w * std::hypot(a * std::sin(u), b * std::cos(u));
+  }
+  EXPECT_NEAR(band.s_to, integral * t_end / (3 * n), 1e-8);
+}
+
+// Knuckle at the junction: r1 = rk, r2 = R, so N_θ = pR(1 − R/(2 rk)). r2 grows to rc at the joint
+// (the normals of knuckle and crown agree there), the knuckle stays compressed all the way, and the
+// crown (r1 = r2 = rc) is in tension: the band ends where the hoop force jumps, at the joint.
+TEST(MembraneStress, TorisphericalKnuckleIsCompressed) {
+  const HeadShape h = head_shape(torispherical_100_6(500), 500);
+  const StressProfile s = membrane_stresses(h.profile, kLoad, 361);
+  EXPECT_NEAR(s.samples[2].hoop_stress, 2 * 500 * (1 - 500 / 120.0) / 10, 1e-9);
+  EXPECT_NEAR(s.samples.back().hoop_stress, 2 * 1000 / 2.0 / 10, 1e-9);
+  ASSERT_EQ(s.compressive_hoop.size(), 1u);
+  const CompressiveBand& band = s.compressive_hoop[0];
+  EXPECT_EQ(band.theta_from, 0.0);
+  EXPECT_NEAR(band.theta_to, h.pieces[1].start, 1e-12);
+  const PrincipalRadii knuckle = principal_radii(h.pieces[0], h.pieces[1].start);
+  EXPECT_NEAR(knuckle.r2, 1000.0, 1e-9);
+  EXPECT_NEAR(membrane_forces(2, knuckle.kappa1, knuckle.r2).hoop, 2 * 1000 * (1 - 1000 / 120.0),
+              1e-8);
+  // The most compressive sample is the last one on the knuckle (N_θ falls towards the joint).
+  const StressSample* last_knuckle = nullptr;
+  for (const StressSample& x : s.samples)
+    if (!x.on_cylinder && x.theta < h.pieces[1].start) last_knuckle = &x;
+  ASSERT_NE(last_knuckle, nullptr);
+  EXPECT_EQ(band.min_hoop_stress, last_knuckle->hoop_stress);
+  EXPECT_GT(band.min_hoop_stress, 2 * 1000 * (1 - 1000 / 120.0) / 10);  // the joint's limit
+}
+
+TEST(MembraneStress, BadLoad) {
+  const PolarFunction f = head_shape({}, 500).profile;
+  EXPECT_THROW(membrane_stresses(f, {500, 1500, 0, 2}), InputError);
+  EXPECT_THROW(membrane_stresses(f, {500, 1500, 10, -1}), InputError);
+  EXPECT_THROW(membrane_stresses(f, kLoad, 1), InputError);
+}
+
+}  // namespace
+}  // namespace polarform

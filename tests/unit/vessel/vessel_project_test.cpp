@@ -1,0 +1,183 @@
+// The vessel project file: the examples load without warnings, save → load is exact, every bad
+// value names file:line:attribute, unknown fields are warnings.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <numbers>
+
+#include "export/project/vessel_project.h"
+#include "src/error.h"
+
+namespace polarform {
+namespace {
+
+using ::testing::HasSubstr;
+namespace fs = std::filesystem;
+constexpr double kPi = std::numbers::pi;
+
+const fs::path kExamples = fs::path(POLARFORM_SOURCE_DIR) / "examples" / "vessels";
+
+std::string error_of(const std::string& xml) {
+  std::vector<std::string> warnings;
+  try {
+    parse_vessel_project(xml, "t.xml", warnings);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+std::string vessel(const std::string& attributes, const std::string& children) {
+  return "<polarform version=\"1\">\n<vessel " + attributes + ">\n" + children +
+         "</vessel>\n</polarform>";
+}
+
+const std::string kVessel = "radius=\"500\" length=\"1500\" thickness=\"10\" pressure=\"2\"";
+
+TEST(VesselProject, ExamplesLoadWithoutWarnings) {
+  for (const char* name : {"hemispherical.xml", "ellipsoidal_2_1.xml", "torispherical_100_6.xml",
+                           "custom_curvature.xml"}) {
+    std::vector<std::string> warnings;
+    const VesselProject p = read_vessel_project(kExamples / name, warnings);
+    EXPECT_TRUE(warnings.empty()) << name << ": " << (warnings.empty() ? "" : warnings[0]);
+    EXPECT_GT(p.design.radius, 0.0) << name;
+  }
+  std::vector<std::string> warnings;
+  const VesselProject t = read_vessel_project(kExamples / "torispherical_100_6.xml", warnings);
+  ASSERT_TRUE(t.design.preset);
+  EXPECT_EQ(*t.design.preset, torispherical_100_6(t.design.radius));
+  const VesselProject c = read_vessel_project(kExamples / "custom_curvature.xml", warnings);
+  EXPECT_FALSE(c.design.preset);
+  EXPECT_GE(c.curvatures.size(), 5u);
+}
+
+VesselProject odd_project() {
+  VesselProject p;
+  p.design.radius = 612.345678901234;
+  p.design.length = 1.0 / 3.0;
+  p.design.thickness = 0.1;
+  p.design.pressure = 1e-7;
+  p.curvatures = {{0.0, 1.0 / 612.345678901234, false, 1.0},
+                  {33.3333333333333, 0.0017, false, 2.5},
+                  {90.0, -2450.5, true, 1e-3},
+                  {180.0, 1e-3, false, 7}};
+  p.design.end_a = EndCondition{612.345678901234, std::nullopt, -0.3};
+  p.design.end_b = EndCondition{std::nullopt, 0.0, std::nullopt};
+  p.design.preset = HeadPreset{HeadKind::torispherical, 2.0, 1224.69, 61.2345};
+  p.design.preset_targets = 73;
+  p.design.synthesis = {6, 23, 3.14e-9, true, 77};
+  p.tolerance = 2.5e-4;
+  return p;
+}
+
+TEST(VesselProject, SaveLoadRoundTripIsExact) {
+  const VesselProject p = odd_project();
+  std::vector<std::string> warnings;
+  EXPECT_EQ(parse_vessel_project(vessel_project_xml(p), "mem.xml", warnings), p);
+  EXPECT_TRUE(warnings.empty());
+
+  VesselProject e = odd_project();
+  e.design.preset = HeadPreset{HeadKind::ellipsoidal, 1.75};
+  e.design.end_b.reset();
+  EXPECT_EQ(parse_vessel_project(vessel_project_xml(e), "mem.xml", warnings), e);
+
+  const fs::path dir = fs::temp_directory_path() / "polarform_vessel_project_test";
+  fs::create_directories(dir);
+  write_vessel_project(p, dir / "p.xml");
+  EXPECT_EQ(read_vessel_project(dir / "p.xml", warnings), p);
+  EXPECT_TRUE(warnings.empty());
+  fs::remove_all(dir);
+}
+
+TEST(VesselProject, ToDesignConvertsUnits) {
+  const VesselDesign d = to_design(odd_project());
+  ASSERT_EQ(d.targets.size(), 4u);
+  EXPECT_DOUBLE_EQ(d.targets[1].theta, 33.3333333333333 * kPi / 180);
+  EXPECT_EQ(d.targets[1].kappa, 0.0017);
+  EXPECT_EQ(d.targets[2].kappa, 1 / -2450.5);  // a radius of curvature
+  EXPECT_EQ(d.targets[2].weight, 1e-3);
+  EXPECT_DOUBLE_EQ(d.targets[3].theta, kPi);
+  EXPECT_EQ(d.radius, 612.345678901234);
+}
+
+TEST(VesselProject, BareVesselRootAndDefaults) {
+  std::vector<std::string> warnings;
+  const VesselProject p = parse_vessel_project(
+      "<vessel " + kVessel + "><head preset=\"hemispherical\"/></vessel>", "t.xml", warnings);
+  EXPECT_TRUE(warnings.empty());
+  EXPECT_EQ(p.design.preset, HeadPreset{});
+  EXPECT_EQ(p.design.synthesis, SynthesisSettings{});
+  EXPECT_FALSE(p.design.end_a);
+  EXPECT_EQ(p.tolerance, 1e-3);
+  EXPECT_EQ(p.design.preset_targets, 48);
+}
+
+TEST(VesselProject, BadValuesNameFileLineAndAttribute) {
+  const std::string head = "<head preset=\"hemispherical\"/>\n";
+  const std::pair<std::string, std::string> cases[] = {
+      {vessel("radius=\"-1\" length=\"1500\" thickness=\"10\" pressure=\"2\"", head),
+       "t.xml:2: <vessel> attribute 'radius': expected a number > 0, got '-1'"},
+      {vessel("radius=\"500\" length=\"1500\" thickness=\"10\"", head),
+       "t.xml:2: <vessel> attribute 'pressure': expected a number (attribute is missing)"},
+      {vessel(kVessel, "<curvature theta=\"200\" kappa=\"0.002\"/>\n"),
+       "t.xml:3: <curvature> attribute 'theta': expected an angle in [0, 180] degrees, got '200'"},
+      {vessel(kVessel, "<curvature theta=\"20\" kappa=\"0.002\" radius=\"500\"/>\n"),
+       "t.xml:3: <curvature> attribute 'radius': expected either kappa or radius, not both, got '500'"},
+      {vessel(kVessel, "<curvature theta=\"20\"/>\n"),
+       "t.xml:3: <curvature> attribute 'kappa': expected a number (attribute is missing)"},
+      {vessel(kVessel, "<curvature theta=\"20\" radius=\"0\"/>\n"),
+       "t.xml:3: <curvature> attribute 'radius': expected a non-zero radius of curvature in mm, got '0'"},
+      {vessel(kVessel, "<curvature theta=\"20\" kappa=\"0.002\" weight=\"0\"/>\n"),
+       "t.xml:3: <curvature> attribute 'weight': expected a number > 0, got '0'"},
+      {vessel(kVessel, head + "<end at=\"C\"/>\n"),
+       "t.xml:4: <end> attribute 'at': expected one of A|B, got 'C'"},
+      {vessel(kVessel, head + "<end at=\"A\" r=\"500\"/>\n<end at=\"A\" dr=\"0\"/>\n"),
+       "t.xml:5: <end> attribute 'at': expected each end at most once, got 'A'"},
+      {vessel(kVessel, head + "<end at=\"B\" ddr=\"x\"/>\n"),
+       "t.xml:4: <end> attribute 'ddr': expected a finite number, got 'x'"},
+      {vessel(kVessel, "<head preset=\"torispherical\" crown=\"1000\" knuckle=\"600\"/>\n"),
+       "t.xml:3: <head> attribute 'knuckle': expected a knuckle radius below the vessel radius 500 mm, got '600'"},
+      {vessel(kVessel, "<head preset=\"torispherical\" crown=\"400\" knuckle=\"60\"/>\n"),
+       "t.xml:3: <head> attribute 'crown': expected a crown radius at least the vessel radius 500 mm, got '400'"},
+      {vessel(kVessel, "<head preset=\"conical\"/>\n"),
+       "t.xml:3: <head> attribute 'preset': expected one of hemispherical|ellipsoidal|torispherical, got 'conical'"},
+      {vessel(kVessel, "<head preset=\"hemispherical\" targets=\"0\"/>\n"),
+       "t.xml:3: <head> attribute 'targets': expected a number of curvature targets >= 1, got '0'"},
+      {vessel(kVessel, head + "<synthesis degree=\"2\"/>\n"),
+       "t.xml:4: <synthesis> attribute 'degree': expected an integer in [3, 40], got '2'"},
+      {vessel(kVessel, head + "<synthesis ordinates=\"5\"/>\n"),
+       "t.xml:4: <synthesis> attribute 'ordinates': expected an integer >= degree + 1 = 6, got '5'"},
+      {vessel(kVessel, head + "<synthesis symmetric=\"yes\"/>\n"),
+       "t.xml:4: <synthesis> attribute 'symmetric': expected one of true|false, got 'yes'"},
+      {vessel(kVessel, head + "<synthesis smoothing=\"-1\"/>\n"),
+       "t.xml:4: <synthesis> attribute 'smoothing': expected a number >= 0, got '-1'"},
+      {vessel(kVessel, head + "<synthesis/>\n<synthesis/>\n"),
+       "t.xml:5: <synthesis>: expected one <synthesis> per vessel"},
+      {vessel(kVessel, ""), "t.xml:2: <vessel>: expected <curvature> elements or a <head preset>"},
+      {"<polarform version=\"1\"/>", "t.xml:1: <polarform>: expected a <vessel> element"},
+      {"<cam/>", "t.xml:1: <cam>: expected a <polarform> or <vessel> root element"},
+      {"<polarform version=\"2\"><vessel/></polarform>",
+       "t.xml:1: <polarform> attribute 'version': expected one of 1, got '2'"},
+  };
+  for (const auto& [xml, expected] : cases) EXPECT_EQ(error_of(xml), expected) << xml;
+}
+
+TEST(VesselProject, UnknownFieldsAreWarnings) {
+  std::vector<std::string> warnings;
+  parse_vessel_project(
+      "<polarform version=\"1\">\n<vessel " + kVessel + " colour=\"red\">\n"
+      "<curvature theta=\"20\" kappa=\"0.002\" unit=\"1/mm\"/>\n"
+      "<head preset=\"hemispherical\" crown=\"900\"/>\n"
+      "<nozzle/>\n</vessel>\n<conversion tolerance=\"0.01\" base=\"quasi-uniform\"/>\n</polarform>",
+      "t.xml", warnings);
+  ASSERT_EQ(warnings.size(), 5u);
+  EXPECT_EQ(warnings[0], "t.xml:3: unknown attribute 'unit' on <curvature> ignored");
+  EXPECT_EQ(warnings[1], "t.xml:4: unknown attribute 'crown' on <head> ignored");
+  EXPECT_EQ(warnings[2], "t.xml:2: unknown attribute 'colour' on <vessel> ignored");
+  EXPECT_EQ(warnings[3], "t.xml:5: unknown element <nozzle> in <vessel> ignored");
+  EXPECT_EQ(warnings[4], "t.xml:7: unknown attribute 'base' on <conversion> ignored");
+}
+
+}  // namespace
+}  // namespace polarform
