@@ -152,4 +152,14 @@ std::optional<BSplineFunction> CamProgram::exact() const {
   return BSplineFunction(p, std::move(knots), Eigen::Map<const Eigen::VectorXd>(values.data(), values.size()));
 }
 
+std::vector<double> CamProgram::smoothness_breaks() const {
+  std::vector<double> out;
+  for (const MotionSegment& seg : segments()) {
+    if (seg.start() > 0) out.push_back(seg.start());
+    if (seg.spec().kind == SegmentKind::Dwell || !is_standard_law(seg.spec().law)) continue;
+    for (double x : law_joins(seg.spec().law)) out.push_back(seg.start() + x * (seg.end() - seg.start()));
+  }
+  return out;
+}
+
 }  // namespace polarform

@@ -41,6 +41,9 @@ class CamProgram {
   // s, s', ..., s^(d) at θ (any real angle, periodic) into out[0..d], d <= 4; mm/rad^k.
   void derivatives(double theta, int d, double* out) const;
   double operator()(double theta) const;
+  // Angles in (0, 2π) where s may lose smoothness: the segment boundaries and the joins inside
+  // piecewise laws (law_joins), increasing.
+  std::vector<double> smoothness_breaks() const;
   // Largest segment-boundary level (the stroke of a program whose segments are monotone).
   double stroke() const { return data_->stroke; }
   // Time derivatives at θ for a cam turning at rpm revolutions per minute (rpm > 0).

@@ -138,10 +138,15 @@ PolarFunction cam_polar_function(const PlateCam& cam, CamCurve curve) {
   const double psi0 = table->psi.front();  // θ = 0
   f.start = table->direction > 0 ? psi0 : psi0 - kTwoPi;
   f.end = f.start + kTwoPi;
-  const std::vector<MotionSegment>& segs = cam.program().segments();
-  for (std::size_t s = 1; s < segs.size(); ++s) {
-    const auto it = std::find(table->theta.begin(), table->theta.end(), segs[s].start());
-    f.breakpoints.push_back(table->psi[it - table->theta.begin()]);
+  for (double theta : cam.program().smoothness_breaks()) {
+    // ψ of the curve point at θ, unwrapped next to the table's value at the interval's start.
+    const int i = static_cast<int>(std::upper_bound(table->theta.begin(), table->theta.end(), theta) -
+                                   table->theta.begin()) - 1;
+    Jet xy[2];
+    curve_jets(*table, table->segment[std::min(i, static_cast<int>(table->segment.size()) - 1)],
+               theta, 0, xy);
+    f.breakpoints.push_back(table->psi[i] +
+                            std::remainder(std::atan2(xy[1][0], xy[0][0]) - table->psi[i], kTwoPi));
   }
   std::sort(f.breakpoints.begin(), f.breakpoints.end());
 

@@ -25,8 +25,8 @@ PolarFunction displacement_polar_function(const CamProgram& program, Rotation ro
   PolarFunction f;
   f.start = rotation == Rotation::Clockwise ? std::numbers::pi / 2 : std::numbers::pi / 2 - two_pi;
   f.end = f.start + two_pi;
-  for (std::size_t i = 1; i < program.segments().size(); ++i)
-    f.breakpoints.push_back(follower_polar_angle(program.segments()[i].start(), rotation));
+  for (double theta : program.smoothness_breaks())
+    f.breakpoints.push_back(follower_polar_angle(theta, rotation));
   std::sort(f.breakpoints.begin(), f.breakpoints.end());
   f.derivatives = [program, rotation, base](double phi, int d, double* out) {
     program.derivatives(cam_angle(phi, rotation), d, out);  // periodic in θ

@@ -152,4 +152,12 @@ std::optional<Polynomial> standard_law_polynomial(MotionLaw law) {
   return std::nullopt;
 }
 
+std::vector<double> law_joins(MotionLaw law) {
+  switch (law) {
+    case MotionLaw::ModifiedTrapezoid: return {0.125, 0.375, 0.625, 0.875};
+    case MotionLaw::ModifiedSine: return {0.125, 0.875};
+    default: return {};
+  }
+}
+
 }  // namespace polarform

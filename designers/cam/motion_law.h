@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string_view>
+#include <vector>
 
 #include "designers/cam/polynomial.h"
 
@@ -32,6 +33,10 @@ bool is_standard_law(MotionLaw law);
 // feeds the third polar derivative of roller and flat-faced contours). x is clamped to [0, 1].
 // Throws InputError for a law that is not standard.
 void standard_law(MotionLaw law, double x, int d, double* out);
+
+// Normalised x in (0, 1) where a standard law's pieces join and its jerk jumps: 1/8, 3/8, 5/8,
+// 7/8 (modified trapezoid), 1/8, 7/8 (modified sine); none for the others.
+std::vector<double> law_joins(MotionLaw law);
 
 // The power-basis form of S on [0, 1] when the standard law is a polynomial (3-4-5, 4-5-6-7).
 std::optional<Polynomial> standard_law_polynomial(MotionLaw law);

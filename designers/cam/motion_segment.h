@@ -28,6 +28,8 @@ struct EndpointDerivatives {
   double velocity = 0.0;
   double acceleration = 0.0;
   double jerk = 0.0;
+
+  bool operator==(const EndpointDerivatives&) const = default;
 };
 
 struct SegmentSpec {
@@ -44,6 +46,8 @@ struct SegmentSpec {
   EndpointDerivatives at_start;
   EndpointDerivatives at_end;
   BSplineLawSettings bspline;  // B-spline law only
+
+  bool operator==(const SegmentSpec&) const = default;
 };
 
 class MotionSegment {

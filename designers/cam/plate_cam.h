@@ -26,6 +26,8 @@ struct Follower {
   FollowerKind kind = FollowerKind::Roller;
   double offset = 0.0;         // e, mm (no effect on a flat face's geometry)
   double roller_radius = 0.0;  // Rr, mm, roller only
+
+  bool operator==(const Follower&) const = default;
 };
 
 // Everything the analyses read at one cam angle.

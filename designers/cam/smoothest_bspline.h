@@ -15,6 +15,8 @@ struct BSplineLawSettings {
   int degree = 5;
   int control_values = 10;
   int minimised_derivative = 3;  // r in ∫ (f^(r))² du; 1 <= r <= degree
+
+  bool operator==(const BSplineLawSettings&) const = default;
 };
 
 // f^(i)(u0) = start[i], f^(i)(u1) = end[i] for i = 0..k (k = start.size() - 1 <= 3), derivatives

@@ -1,0 +1,38 @@
+// CamDesign: everything a cam project describes — cam type, follower, radii, rotation, speed and
+// the motion segments — as one plain value, and the evaluable objects built from it. Project
+// files, the CLI and the studio all edit this one struct. Lengths in mm, angles in radians.
+#pragma once
+
+#include <string_view>
+#include <vector>
+
+#include "designers/cam/barrel_cam.h"
+#include "designers/cam/plate_cam.h"
+
+namespace polarform {
+
+enum class CamType { Plate, Cylindrical };
+
+std::string_view cam_type_name(CamType type);  // "plate", "cylindrical"
+std::string_view follower_kind_name(FollowerKind kind);  // "knife-edge", "roller", "flat-faced"
+std::string_view rotation_name(Rotation rotation);  // "ccw", "cw"
+
+struct CamDesign {
+  CamType type = CamType::Plate;
+  Follower follower;
+  double base_radius = 40.0;  // Rb: smallest circle tangent to the contour (plate cams)
+  Rotation rotation = Rotation::CounterClockwise;
+  double rpm = 300.0;
+  double cylinder_radius = 0.0;  // Rc: pitch cylinder of the track centre (cylindrical cams)
+  double z0 = 0.0;               // track height at s = 0 (cylindrical cams)
+  std::vector<SegmentSpec> segments;
+
+  bool operator==(const CamDesign&) const = default;
+};
+
+// The validated program and cams; InputError names what is wrong.
+CamProgram make_program(const CamDesign& design);
+PlateCam make_plate_cam(const CamDesign& design);
+BarrelCam make_barrel_cam(const CamDesign& design);
+
+}  // namespace polarform

@@ -1,0 +1,64 @@
+#include "designers/convert/conversion_error.h"
+
+#include "designers/convert/golden_section.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace polarform {
+
+namespace {
+
+constexpr double kTwoPi = 2 * std::numbers::pi;
+
+// ψ wrapped into R's domain (closed functions) or clamped to it (open ones).
+double into_domain(const PolarFunction& R, double psi) {
+  if (R.closed()) {
+    psi = R.start + std::fmod(psi - R.start, kTwoPi);
+    return psi < R.start ? psi + kTwoPi : psi;
+  }
+  return std::clamp(psi, R.start, R.end);
+}
+
+}  // namespace
+
+double radial_error_at(const NurbsCurve2d& C, const PolarFunction& R, double u, double near,
+                       double* psi_out) {
+  const Eigen::Vector2d p = C(u);
+  const double psi = near + std::remainder(std::atan2(p.y(), p.x()) - near, kTwoPi);
+  if (psi_out) *psi_out = psi;
+  return std::abs(p.norm() - R(into_domain(R, psi)));
+}
+
+ProfileError profile_error(const NurbsCurve2d& C, const PolarFunction& R, double u0, double u1,
+                           int samples) {
+  // The base circles are parametrised by angle, so u is a good guess of the polar angle.
+  const Maximum m =
+      refined_maximum([&](double u) { return radial_error_at(C, R, u, u); }, {u0, u1}, samples, 4);
+  ProfileError out;
+  out.max_radial = m.value;
+  double psi;
+  radial_error_at(C, R, m.at, m.at, &psi);
+  out.at_angle = into_domain(R, psi);
+  double d[2];
+  R.derivatives(out.at_angle, 1, d);
+  // A radial offset δ moves the point by δ·R/√(R² + R'²) along the normal of r = R(ψ).
+  out.max_normal = m.value * std::abs(d[0]) / std::hypot(d[0], d[1]);
+  return out;
+}
+
+double max_tangent_jump(const NurbsCurve2d& C, const std::vector<double>& junctions) {
+  double worst = 0.0;
+  for (double u : junctions) {
+    const double h = 1e-7 * (C.back() - C.front());
+    // One-sided tangents, extrapolated to u from inside each span (second order).
+    const auto left = C.derivatives(u - h, 2), right = C.derivatives(u + h, 2);
+    const Eigen::Vector2d tl = left[1] + h * left[2], tr = right[1] - h * right[2];
+    const double cross = tl.x() * tr.y() - tl.y() * tr.x();
+    worst = std::max(worst, std::abs(std::atan2(cross, tl.dot(tr))));
+  }
+  return worst;
+}
+
+}  // namespace polarform

@@ -1,0 +1,79 @@
+#include "designers/convert/polar_conversion.h"
+
+#include <algorithm>
+#include <string>
+
+#include "designers/convert/arc_layout.h"
+#include "designers/convert/conversion_error.h"
+#include "designers/convert/function_spline.h"
+#include "src/error.h"
+#include "src/nurbs/symbolic_product.h"
+
+namespace polarform {
+
+namespace {
+
+// Measures every arc of C; returns the indices of the arcs over the tolerance.
+std::vector<int> measure_arcs(const NurbsCurve2d& C, const PolarFunction& R,
+                              const std::vector<double>& breaks, PolarConversion& out) {
+  std::vector<int> failing;
+  out.arcs.clear();
+  out.max_radial_error = out.max_normal_error = 0.0;
+  for (std::size_t j = 0; j + 1 < breaks.size(); ++j) {
+    const ProfileError e = profile_error(C, R, breaks[j], breaks[j + 1]);
+    out.arcs.push_back({breaks[j], breaks[j + 1] - breaks[j], e.max_radial});
+    if (e.max_radial > out.max_radial_error) {
+      out.max_radial_error = e.max_radial;
+      out.worst_angle = e.at_angle;
+    }
+    out.max_normal_error = std::max(out.max_normal_error, e.max_normal);
+    if (e.max_radial > out.tolerance) failing.push_back(static_cast<int>(j));
+  }
+  return failing;
+}
+
+}  // namespace
+
+PolarConversion convert_polar_function(const PolarFunction& R, const ConversionOptions& options) {
+  if (!(options.tolerance > 0)) throw InputError("conversion: tolerance must be > 0 mm");
+  if (!(options.function_share > 0 && options.function_share < 1))
+    throw InputError("conversion: function_share must lie in (0, 1)");
+  if (R.end - R.start > 2 * std::numbers::pi + 1e-12)
+    throw InputError("conversion: angular domain exceeds 360°");
+
+  PolarConversion out;
+  out.tolerance = options.tolerance;
+  const FunctionSpline F = represent_as_bspline(R, options.function_share * options.tolerance);
+  out.function = F.spline;
+  out.function_error = F.max_error;
+  out.function_exact = F.exact;
+
+  const double arc_budget = options.tolerance - F.max_error;
+  std::vector<double> breaks = layout_arcs(
+      F.spline, R.breakpoints, {options.base, options.alpha, 0.9 * arc_budget});
+
+  // Build, measure, and split every arc the measurement rejects, until all arcs pass.
+  for (int round = 0;; ++round) {
+    out.base = BaseCircle(options.base, breaks, options.alpha);
+    out.curve = product(F.spline, out.base.curve());
+    const std::vector<int> failing = measure_arcs(out.curve, R, breaks, out);
+    if (failing.empty()) break;
+    if (round == 20)
+      throw NumericalError("conversion: measured error " + std::to_string(out.max_radial_error) +
+                           " mm still exceeds the tolerance after 20 refinements");
+    for (auto j = failing.rbegin(); j != failing.rend(); ++j)
+      breaks.insert(breaks.begin() + *j + 1, 0.5 * (breaks[*j] + breaks[*j + 1]));
+  }
+
+  out.synchronization_error = 0.0;
+  for (std::size_t j = 0; j + 1 < breaks.size(); ++j)
+    out.synchronization_error = std::max(
+        out.synchronization_error,
+        arc_synchronization_error(F.spline, breaks[j], breaks[j + 1], options.base, options.alpha,
+                                  64));
+  out.max_tangent_jump =
+      max_tangent_jump(out.curve, std::vector<double>(breaks.begin() + 1, breaks.end() - 1));
+  return out;
+}
+
+}  // namespace polarform
