@@ -2,6 +2,6 @@
 
 namespace polarform::cli {
 
-void register_commands(CLI::App& app) { (void)app; }
+void register_commands(CLI::App& app) { add_cam_command(app); }
 
 }  // namespace polarform::cli

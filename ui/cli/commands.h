@@ -8,4 +8,7 @@ namespace polarform::cli {
 // Adds every subcommand to the app.
 void register_commands(CLI::App& app);
 
+// One per cmd_*.cpp.
+void add_cam_command(CLI::App& app);
+
 }  // namespace polarform::cli

@@ -1,0 +1,51 @@
+// The cam project file: a CamDesign with its conversion settings as XML, in the file's units
+// (angles in degrees, lengths in mm, endpoint derivatives per radian of cam angle). Reading names
+// file:line:attribute for every bad value and warns about unknown fields; writing is atomic, and a
+// saved project loads back exactly (angles are written as the degree value that converts back to
+// the same radians).
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "designers/cam/cam_design.h"
+#include "designers/convert/polar_conversion.h"
+
+namespace polarform {
+
+struct CamProject {
+  CamDesign cam;
+  ConversionOptions conversion;
+  // Highest spline degree the exported profile files may have; empty = the exact degree.
+  std::optional<int> max_degree;
+
+  bool operator==(const CamProject&) const = default;
+};
+
+// Reads
+//   <polarform version="1">
+//     <cam type="plate|cylindrical" follower="knife-edge|roller|flat-faced" base-radius="mm"
+//          roller-radius="mm" offset="mm" rotation="ccw|cw" rpm="1/min" cylinder-radius="mm"
+//          z0="mm">
+//       <segment kind="dwell|rise|return" law="…" lift="mm" from="deg" to="deg" name="…"
+//                degree="5" control-values="10" minimise="1|2|3">   (degree…: law="bspline")
+//         <start v="mm/rad" a="mm/rad²" j="mm/rad³"/>  <end …/>   (law="polynomial|bspline")
+//       </segment>…
+//     </cam>
+//     <conversion tolerance="mm" base="quasi-uniform|rqb" alpha="minimax|printed"
+//                 max-degree=""/>
+//   </polarform>
+// `from` defaults to the previous segment's `to` (0 for the first); a return's `lift` defaults to
+// the level reached so far. Throws InputError "file:line: <element> attribute 'x': expected …";
+// appends a warning for every unknown attribute or element.
+CamProject read_cam_project(const std::filesystem::path& file, std::vector<std::string>& warnings);
+CamProject parse_cam_project(const std::string& text, const std::string& file,
+                             std::vector<std::string>& warnings);
+
+// The project as XML (numbers in their shortest exact form) and saved atomically.
+std::string cam_project_xml(const CamProject& project);
+void write_cam_project(const CamProject& project, const std::filesystem::path& file);
+
+}  // namespace polarform

@@ -1,0 +1,96 @@
+// `polarform cam`: design a cam from a project file, convert its profile to an exact NURBS curve
+// within the tolerance and write CAD files, plots and reports.
+#include <cstdio>
+#include <filesystem>
+#include <numbers>
+#include <iostream>
+
+#include "ui/cli/commands.h"
+#include "ui/jobs/cam_outputs.h"
+
+namespace polarform::cli {
+
+namespace {
+
+struct CamArgs {
+  std::string design;
+  std::string out;
+  std::optional<double> tolerance;
+  std::string base;
+  std::optional<int> max_degree;
+  std::optional<double> solid;
+  std::optional<double> bore;
+  bool quiet = false;
+};
+
+void run(const CamArgs& a) {
+  std::vector<std::string> warnings;
+  CamProject project = read_cam_project(a.design, warnings);
+  for (const std::string& w : warnings) std::cerr << "polarform: warning: " << w << "\n";
+  if (a.tolerance) project.conversion.tolerance = *a.tolerance;
+  if (!a.base.empty()) project.conversion.base = a.base == "rqb" ? ArcKind::rqb : ArcKind::quartic;
+  if (a.max_degree) project.max_degree = *a.max_degree;
+
+  const CamJobResult r = run_cam_job(project);
+  CamOutputOptions options;
+  options.design_name = std::filesystem::path(a.design).stem().string();
+  options.solid_thickness = a.solid;
+  options.bore_diameter = a.bore;
+  const std::vector<std::string> files = write_cam_outputs(r, a.out, options);
+
+  for (const ContinuityIssue& issue : r.continuity)
+    std::cerr << "polarform: motion: " << issue.message() << "\n";
+  if (a.quiet) return;
+  const PolarConversion& c = r.conversion;
+  const bool plate = r.plate.has_value();
+  std::printf("%s cam, %s follower: %zu arcs, degree %d, %d control points\n",
+              std::string(cam_type_name(project.cam.type)).c_str(),
+              std::string(follower_kind_name(project.cam.follower.kind)).c_str(), c.arcs.size(),
+              plate ? r.profile.degree() : r.track.degree(), plate ? r.profile.size() : r.track.size());
+  std::printf("tolerance %.3g mm: measured max radial error %.3g mm, max normal error %.3g mm\n",
+              c.tolerance, c.max_radial_error, c.max_normal_error);
+  if (r.analysis) {
+    std::printf("max pressure angle %.2f deg, min radius of curvature %.3f mm, undercut: %s\n",
+                r.analysis->max_pressure_angle.value * 180 / std::numbers::pi,
+                r.analysis->min_convex_contour_radius.value,
+                r.analysis->undercut.empty() ? "none" : "YES");
+  }
+  if (r.limited)
+    std::printf("degree-%d profile: %d control points, measured max radial error %.3g mm\n",
+                r.limited->curve.degree(), r.limited->control_points, r.limited->max_radial_error);
+  std::printf("wrote %zu files to %s (%.0f ms)\n", files.size(),
+              std::filesystem::absolute(a.out).string().c_str(), r.seconds * 1e3);
+}
+
+}  // namespace
+
+void add_cam_command(CLI::App& app) {
+  auto args = std::make_shared<CamArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "cam",
+      "Design a plate or cylindrical cam from a project file and export its exact NURBS profile.\n"
+      "Writes profile.igs/.stp/.dxf/.x3d (track.* for cylindrical cams), profile_deg3.dxf,\n"
+      "svaj.csv, svaj.svg, analysis.svg, profile.svg, error.svg, report.json and report.html.");
+  cmd->add_option("design", args->design, "cam project file (XML, see docs/file-formats.md)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--out", args->out, "output directory (created if missing)")->required();
+  cmd->add_option("--tol", args->tolerance, "conversion tolerance in mm (overrides the project)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--base", args->base, "base-circle arcs (overrides the project)")
+      ->check(CLI::IsMember({"quasi-uniform", "rqb"}));
+  cmd->add_option("--max-degree", args->max_degree,
+                  "cap the degree of the exported profile (approximated within the tolerance)")
+      ->check(CLI::Range(1, 40));
+  auto* solid = cmd->add_option("--solid", args->solid,
+                                "also write the plate cam as a solid of this thickness in mm "
+                                "(cam_solid.stp)")
+                    ->check(CLI::PositiveNumber);
+  cmd->add_option("--bore", args->bore, "bore diameter of the solid in mm")
+      ->check(CLI::PositiveNumber)
+      ->needs(solid);
+  cmd->add_flag("--quiet,-q", args->quiet, "print nothing but warnings and errors");
+  cmd->callback([args] { run(*args); });
+}
+
+}  // namespace polarform::cli

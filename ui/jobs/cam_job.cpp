@@ -1,0 +1,74 @@
+#include "ui/jobs/cam_job.h"
+
+#include <algorithm>
+#include <chrono>
+#include <numbers>
+
+#include "designers/cam/contour_polar_function.h"
+#include "src/nurbs/symbolic_product.h"
+
+namespace polarform {
+
+namespace {
+
+// The track centre line (Rc·X, Rc·Y, z): the base circle's homogeneous rows times the factors
+// (Rc, F − offset, 1), with F the converted track height (Bae 2002, eq. (B.3) in curve form).
+NurbsCurve3d track_curve(const PolarConversion& c, double radius, double offset) {
+  const BSpline& F = c.function.spline();
+  Eigen::MatrixXd rows(3, F.size());
+  rows.row(0).setConstant(radius);
+  rows.row(1) = F.coefs().row(0).array() - offset;
+  rows.row(2).setOnes();
+  return NurbsCurve3d(product_rows(BSpline(F.degree(), F.knots(), std::move(rows)), {0, 0, 1, 2},
+                                   c.base.curve().homogeneous(), {0, 1, 2, 2}));
+}
+
+}  // namespace
+
+CamJobResult run_cam_job(const CamProject& project, const CamJobOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  const CamDesign& design = project.cam;
+  CamJobResult r(project, make_program(design));
+  r.continuity = check_continuity(r.program, 2);
+  r.angles = uniform_angles(options.analysis_angles);
+  for (double theta : r.angles) r.kinematics.push_back(r.program.kinematics(theta, design.rpm));
+
+  if (design.type == CamType::Plate) {
+    r.plate = make_plate_cam(design);
+    r.analysis = analyse(*r.plate, r.angles);
+    r.profile_function = cam_polar_function(*r.plate);
+    r.conversion = convert_polar_function(r.profile_function, project.conversion);
+    r.profile = r.conversion.curve;
+    if (options.with_limited)
+      r.limited = approximate_polar_curve(r.profile_function, options.limited_degree,
+                                          project.conversion.tolerance);
+    if (project.max_degree && r.profile.degree() > *project.max_degree)
+      r.capped = approximate_polar_curve(r.profile_function, *project.max_degree,
+                                         project.conversion.tolerance);
+  } else {
+    r.barrel = make_barrel_cam(design);
+    for (double theta : r.angles)
+      r.barrel_pressure_angle.push_back(r.barrel->pressure_angle(theta, design.cylinder_radius));
+    // The converter works on positive polar functions: convert z + offset.
+    r.profile_function = r.barrel->track_height();
+    // s >= 0 is measured from the lowest level, so z >= z0.
+    r.track_offset = std::max(0.0, -design.z0) + design.cylinder_radius;
+    const auto height = r.profile_function.derivatives;
+    const double offset = r.track_offset;
+    r.profile_function.derivatives = [height, offset](double t, int d, double* out) {
+      height(t, d, out);
+      out[0] += offset;
+    };
+    if (r.profile_function.exact) {
+      const BSpline& e = r.profile_function.exact->spline();
+      r.profile_function.exact = BSplineFunction(
+          BSpline(e.degree(), e.knots(), Eigen::MatrixXd(e.coefs().array() + offset)));
+    }
+    r.conversion = convert_polar_function(r.profile_function, project.conversion);
+    r.track = track_curve(r.conversion, design.cylinder_radius, r.track_offset);
+  }
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+}  // namespace polarform
