@@ -2,6 +2,9 @@
 
 namespace polarform::cli {
 
-void register_commands(CLI::App& app) { add_cam_command(app); }
+void register_commands(CLI::App& app) {
+  add_cam_command(app);
+  add_study_command(app);
+}
 
 }  // namespace polarform::cli
