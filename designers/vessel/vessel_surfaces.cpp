@@ -42,15 +42,6 @@ BSpline head_part(const BSpline& c, double u) {
   return BSpline(p, std::move(knots), split.coefs().leftCols(first));
 }
 
-// (x, z) homogeneous rows → (x, 0, z) in 3D.
-NurbsCurve3d in_meridian_plane(const BSpline& planar) {
-  Eigen::MatrixXd h = Eigen::MatrixXd::Zero(4, planar.size());
-  h.row(0) = planar.coefs().row(0);
-  h.row(2) = planar.coefs().row(1);
-  h.row(3) = planar.coefs().row(2);
-  return NurbsCurve3d(BSpline(planar.degree(), planar.knots(), h));
-}
-
 // z → 2 z_m − z for every control point, and the parameter reversed (u → a + b − u).
 NurbsCurve3d mirrored_reversed(const NurbsCurve3d& c, double z_mirror) {
   Eigen::MatrixXd h = c.homogeneous().coefs().rowwise().reverse();
@@ -63,6 +54,16 @@ NurbsCurve3d mirrored_reversed(const NurbsCurve3d& c, double z_mirror) {
 }
 
 }  // namespace
+
+// (x, z) homogeneous rows → (x, 0, z) in 3D.
+NurbsCurve3d in_meridian_plane(const NurbsCurve2d& profile) {
+  const BSpline& planar = profile.homogeneous();
+  Eigen::MatrixXd h = Eigen::MatrixXd::Zero(4, planar.size());
+  h.row(0) = planar.coefs().row(0);
+  h.row(2) = planar.coefs().row(1);
+  h.row(3) = planar.coefs().row(2);
+  return NurbsCurve3d(BSpline(planar.degree(), planar.knots(), h));
+}
 
 VesselSurfaces vessel_surfaces(const NurbsCurve2d& profile, double length) {
   if (!(length > 0.0 && std::isfinite(length)))
@@ -83,7 +84,7 @@ VesselSurfaces vessel_surfaces(const NurbsCurve2d& profile, double length) {
     half = BSpline(half.degree(), half.knots(), h);
   }
   out.head_profile = NurbsCurve2d(half);
-  const NurbsCurve3d head = in_meridian_plane(half);
+  const NurbsCurve3d head = in_meridian_plane(out.head_profile);
   out.head = revolve(head, kOrigin, kAxis);
 
   const Eigen::Vector3d junction = head.control_point(0);

@@ -33,6 +33,9 @@ struct VesselSurfaces {
   NurbsSurface far_head;  // z <= −length
 };
 
+// The meridian curve (x, z) of the convention below as the 3D curve (x, 0, z), exactly.
+NurbsCurve3d in_meridian_plane(const NurbsCurve2d& profile);
+
 // `profile` is the converted R(θ) over θ in [0, π] (it starts at junction A on the +x axis and crosses
 // the axis once). Throws InputError unless length > 0, the profile starts at x > 0 with |z| within
 // 1e-9 of its size and ends at x < 0.

@@ -11,5 +11,6 @@ void register_commands(CLI::App& app);
 // One per cmd_*.cpp.
 void add_cam_command(CLI::App& app);
 void add_study_command(CLI::App& app);
+void add_vessel_command(CLI::App& app);
 
 }  // namespace polarform::cli
