@@ -24,6 +24,15 @@ std::string number(double x) {
   return std::string(buf, result.ptr);
 }
 
+// An angle in degrees for messages, to 12 significant digits: 240° reads "240", not the
+// 239.99999999999997 that radians → degrees gives back.
+std::string degrees_text(double radians) {
+  char buf[32];
+  const auto result =
+      std::to_chars(buf, buf + sizeof buf, radians / kDegree, std::chars_format::general, 12);
+  return std::string(buf, result.ptr) + "°";
+}
+
 // The degree value whose conversion d·π/180 gives back exactly `radians` (searched among the
 // neighbours of the rounded quotient), so that save → load is exact.
 double degrees_for(double radians) {
@@ -66,7 +75,7 @@ SegmentSpec read_segment(const XmlElementReader& r, double from, double level,
   s.start = r.number("from", from / kDegree) * kDegree;
   s.end = r.number("to") * kDegree;
   if (!(s.end > s.start))
-    r.fail("to", "an angle after the segment start " + number(s.start / kDegree) + "°");
+    r.fail("to", "an angle after the segment start " + degrees_text(s.start));
   if (s.kind == SegmentKind::Dwell) return s;
   try {
     s.law = parse_motion_law(r.text("law", "cycloidal"));
@@ -119,8 +128,8 @@ CamDesign read_cam(const XmlElementReader& r, const std::string& file,
     const XmlElementReader s(e, file);
     SegmentSpec spec = read_segment(s, at, level, file, warnings);
     if (std::abs(spec.start - at) > 1e-9)
-      throw InputError(s.where() + ": segment starts at " + number(spec.start / kDegree) +
-                       "° but the previous one ends at " + number(at / kDegree) + "° (" +
+      throw InputError(s.where() + ": segment starts at " + degrees_text(spec.start) +
+                       " but the previous one ends at " + degrees_text(at) + " (" +
                        (spec.start > at ? "a gap" : "an overlap") + ")");
     at = spec.end;
     level += spec.kind == SegmentKind::Rise ? spec.lift : spec.kind == SegmentKind::Return ? -spec.lift : 0;
@@ -128,8 +137,8 @@ CamDesign read_cam(const XmlElementReader& r, const std::string& file,
     d.segments.push_back(std::move(spec));
   }
   if (std::abs(at - 2 * std::numbers::pi) > 1e-9)
-    throw InputError(r.where() + ": the segments end at " + number(at / kDegree) +
-                     "°; they must cover 0° to 360°");
+    throw InputError(r.where() + ": the segments end at " + degrees_text(at) +
+                     "; they must cover 0° to 360°");
   try {
     make_program(d);
   } catch (const InputError& e) {
@@ -140,6 +149,8 @@ CamDesign read_cam(const XmlElementReader& r, const std::string& file,
 
 void read_conversion(const XmlElementReader& r, CamProject& p) {
   p.conversion.tolerance = r.positive("tolerance", p.conversion.tolerance);
+  if (p.conversion.tolerance < kMinTolerance)
+    r.fail("tolerance", "a tolerance >= " + number(kMinTolerance) + " mm");
   p.conversion.base = r.choice("base", {"quasi-uniform", "rqb"}, "quasi-uniform") == "rqb"
                           ? ArcKind::rqb
                           : ArcKind::quartic;

@@ -15,6 +15,11 @@
 
 namespace polarform {
 
+// The tightest conversion tolerance a project may ask for, mm. Below it double-precision evaluation
+// of a profile of ordinary size (radii up to metres) cannot verify the error, and the converter
+// would refine without end.
+inline constexpr double kMinTolerance = 1e-9;
+
 struct CamProject {
   CamDesign cam;
   ConversionOptions conversion;
@@ -34,8 +39,8 @@ struct CamProject {
 //         <start v="mm/rad" a="mm/rad²" j="mm/rad³"/>  <end …/>   (law="polynomial|bspline")
 //       </segment>…
 //     </cam>
-//     <conversion tolerance="mm" base="quasi-uniform|rqb" alpha="minimax|printed"
-//                 max-degree=""/>
+//     <conversion tolerance="mm, >= kMinTolerance" base="quasi-uniform|rqb"
+//                 alpha="minimax|printed" max-degree=""/>
 //   </polarform>
 // `from` defaults to the previous segment's `to` (0 for the first); a return's `lift` defaults to
 // the level reached so far. Throws InputError "file:line: <element> attribute 'x': expected …";

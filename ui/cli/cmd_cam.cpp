@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "ui/cli/commands.h"
+#include "ui/cli/validators.h"
 #include "ui/jobs/cam_outputs.h"
 
 namespace polarform::cli {
@@ -31,7 +32,7 @@ void run(const CamArgs& a) {
   if (!a.base.empty()) project.conversion.base = a.base == "rqb" ? ArcKind::rqb : ArcKind::quartic;
   if (a.max_degree) project.max_degree = *a.max_degree;
 
-  const CamJobResult r = run_cam_job(project);
+  const CamJobResult r = for_design(a.design, [&] { return run_cam_job(project); });
   CamOutputOptions options;
   options.design_name = std::filesystem::path(a.design).stem().string();
   options.solid_thickness = a.solid;
@@ -76,7 +77,7 @@ void add_cam_command(CLI::App& app) {
       ->check(CLI::ExistingFile);
   cmd->add_option("--out", args->out, "output directory (created if missing)")->required();
   cmd->add_option("--tol", args->tolerance, "conversion tolerance in mm (overrides the project)")
-      ->check(CLI::PositiveNumber);
+      ->check(tolerance_mm());
   cmd->add_option("--base", args->base, "base-circle arcs (overrides the project)")
       ->check(CLI::IsMember({"quasi-uniform", "rqb"}));
   cmd->add_option("--max-degree", args->max_degree,
@@ -85,9 +86,9 @@ void add_cam_command(CLI::App& app) {
   auto* solid = cmd->add_option("--solid", args->solid,
                                 "also write the plate cam as a solid of this thickness in mm "
                                 "(cam_solid.stp)")
-                    ->check(CLI::PositiveNumber);
+                    ->check(positive_mm());
   cmd->add_option("--bore", args->bore, "bore diameter of the solid in mm")
-      ->check(CLI::PositiveNumber)
+      ->check(positive_mm())
       ->needs(solid);
   cmd->add_flag("--quiet,-q", args->quiet, "print nothing but warnings and errors");
   cmd->callback([args] { run(*args); });

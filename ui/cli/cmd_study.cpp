@@ -4,6 +4,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "export/number_format.h"
 #include "ui/cli/commands.h"
 #include "ui/cli/progress_bar.h"
 #include "ui/jobs/study_job.h"
@@ -34,6 +35,9 @@ std::pair<double, double> parse_range(const std::string& text) {
   } catch (const std::exception&) {
     throw InputError("--tol '" + text + "': expected LOOSEST:TIGHTEST in mm, e.g. 1e-2:1e-7");
   }
+  if (!(tightest >= kMinTolerance && loosest >= tightest))
+    throw InputError("--tol '" + text + "': expected LOOSEST >= TIGHTEST >= " +
+                     format_round_trip(kMinTolerance) + " mm");
   return {loosest, tightest};
 }
 
@@ -44,7 +48,8 @@ void run(const StudyArgs& a) {
   const CamProject project = read_cam_project(a.design, warnings);
   for (const std::string& w : warnings) std::cerr << "polarform: warning: " << w << "\n";
   ProgressBar bar("study", !a.quiet);
-  const StudyJobResult r = run_study_job(project, tolerances, std::ref(bar));
+  const StudyJobResult r =
+      for_design(a.design, [&] { return run_study_job(project, tolerances, std::ref(bar)); });
   bar.finish();
   const std::string name = std::filesystem::path(a.design).stem().string();
   const std::vector<std::string> files = write_study_outputs(r, name, a.out);

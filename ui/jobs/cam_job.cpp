@@ -5,6 +5,8 @@
 #include <numbers>
 
 #include "designers/cam/contour_polar_function.h"
+#include "export/number_format.h"
+#include "src/error.h"
 #include "src/nurbs/symbolic_product.h"
 
 namespace polarform {
@@ -27,6 +29,9 @@ NurbsCurve3d track_curve(const PolarConversion& c, double radius, double offset)
 
 CamJobResult run_cam_job(const CamProject& project, const CamJobOptions& options) {
   const auto start = std::chrono::steady_clock::now();
+  if (!(project.conversion.tolerance >= kMinTolerance))
+    throw InputError("conversion tolerance " + format_round_trip(project.conversion.tolerance) +
+                     " mm: expected >= " + format_round_trip(kMinTolerance) + " mm");
   const CamDesign& design = project.cam;
   CamJobResult r(project, make_program(design));
   r.continuity = check_continuity(r.program, 2);

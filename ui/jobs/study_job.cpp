@@ -8,6 +8,7 @@
 
 #include "export/atomic_file.h"
 #include "export/csv_writer.h"
+#include "export/number_format.h"
 #include "export/svg_plot.h"
 #include "polarform_version.h"
 #include "src/error.h"
@@ -89,6 +90,10 @@ Figure deviation_figure(const StudyJobResult& r) {
 StudyJobResult run_study_job(const CamProject& project, const std::vector<double>& tolerances,
                              const std::function<void(double)>& progress) {
   const auto start = std::chrono::steady_clock::now();
+  for (double tol : tolerances)
+    if (!(tol >= kMinTolerance))
+      throw InputError("study tolerance " + format_round_trip(tol) + " mm: expected >= " +
+                       format_round_trip(kMinTolerance) + " mm");
   CamJobOptions options;
   options.with_limited = false;
   options.analysis_angles = 16;
