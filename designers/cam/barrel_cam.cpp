@@ -5,7 +5,7 @@
 #include <string>
 
 #include "designers/cam/displacement_polar_function.h"
-#include "designers/cam/message_text.h"
+#include "src/message_text.h"
 #include "src/error.h"
 
 namespace polarform {

@@ -7,7 +7,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "designers/cam/message_text.h"
+#include "src/message_text.h"
 #include "src/error.h"
 
 namespace polarform {

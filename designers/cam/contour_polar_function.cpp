@@ -7,7 +7,7 @@
 #include <numbers>
 #include <vector>
 
-#include "designers/cam/message_text.h"
+#include "src/message_text.h"
 #include "designers/cam/displacement_polar_function.h"
 #include "designers/cam/extremum_search.h"
 #include "src/error.h"
@@ -25,6 +25,8 @@ struct CurveTable {
   std::vector<double> theta;  // increasing, 0 .. 2π
   std::vector<double> psi;    // unwrapped ψ(θ), monotone in `direction`
   std::vector<int> segment;   // segment holding [theta[i], theta[i+1]]
+  // dψ/dθ at both ends of [theta[i], theta[i+1]], taken inside its segment (for the Hermite start).
+  std::vector<double> rate_lo, rate_hi;
 };
 
 // Curve point in the cam frame as jets of order d, θ in segment `seg`.
@@ -53,7 +55,7 @@ double psi_rate(const Jet* xy) {
 }
 
 std::shared_ptr<CurveTable> build_table(const PlateCam& cam, CamCurve curve) {
-  auto t = std::make_shared<CurveTable>(CurveTable{cam, curve, -cam.sense(), {}, {}, {}});
+  auto t = std::make_shared<CurveTable>(CurveTable{cam, curve, -cam.sense(), {}, {}, {}, {}, {}});
   const char* what = curve == CamCurve::Contour ? "contour" : "pitch curve";
   const std::vector<MotionSegment>& segs = cam.program().segments();
   // Margin > 0 where ψ runs the right way.
@@ -97,7 +99,11 @@ std::shared_ptr<CurveTable> build_table(const PlateCam& cam, CamCurve curve) {
     for (int i = s == 0 ? 0 : 1; i <= n; ++i) {
       t->psi.push_back(t->psi.empty() ? raw_psi[i] : t->psi.back() + std::remainder(raw_psi[i] - t->psi.back(), kTwoPi));
       t->theta.push_back(thetas[i]);
-      if (i > 0) t->segment.push_back(s);
+      if (i > 0) {
+        t->segment.push_back(s);
+        t->rate_lo.push_back(t->direction * margins[i - 1]);
+        t->rate_hi.push_back(t->direction * margins[i]);
+      }
     }
   }
   const double winding = (t->psi.back() - t->psi.front()) / kTwoPi;
@@ -107,11 +113,21 @@ std::shared_ptr<CurveTable> build_table(const PlateCam& cam, CamCurve curve) {
   return t;
 }
 
-// θ with ψ(θ) = target inside table interval i, by Newton's method safeguarded by bisection.
+// θ with ψ(θ) = target inside table interval i, by Newton's method safeguarded by bisection,
+// started from the cubic Hermite interpolant of θ(ψ) on the interval (dθ/dψ = 1/ψ'), which is
+// already within ~h⁴ of the root, so one step usually settles it.
 double invert(const CurveTable& t, int i, double target) {
   double lo = t.theta[i], hi = t.theta[i + 1];
   const double p0 = t.psi[i], p1 = t.psi[i + 1];
-  double theta = p1 == p0 ? lo : lo + (hi - lo) * (target - p0) / (p1 - p0);
+  double theta = lo;
+  if (p1 != p0) {
+    const double h = p1 - p0, x = (target - p0) / h, x2 = x * x, x3 = x2 * x;
+    theta = (2 * x3 - 3 * x2 + 1) * lo + (x3 - 2 * x2 + x) * h / t.rate_lo[i] +
+            (-2 * x3 + 3 * x2) * hi + (x3 - x2) * h / t.rate_hi[i];
+    if (!(theta >= lo && theta <= hi)) theta = lo + (hi - lo) * x;
+  }
+  // A Newton step this small leaves an error of order step² · ψ''/ψ': below round-off.
+  constexpr double kSettled = 1e-9;
   for (int iter = 0; iter < 100; ++iter) {
     Jet xy[2];
     curve_jets(t, t.segment[i], theta, 1, xy);
@@ -119,8 +135,11 @@ double invert(const CurveTable& t, int i, double target) {
     if (g == 0.0) return theta;
     (t.direction * g > 0 ? hi : lo) = theta;
     double next = theta - g / psi_rate(xy);
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    if (std::abs(next - theta) <= 4 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(theta)))
+    const bool newton = next >= lo && next <= hi;
+    if (!newton) next = 0.5 * (lo + hi);
+    const double step = std::abs(next - theta);
+    if ((newton && step <= kSettled) ||
+        step <= 4 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(theta)))
       return next;
     theta = next;
   }

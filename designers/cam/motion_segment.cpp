@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "designers/cam/message_text.h"
+#include "src/message_text.h"
 #include "designers/cam/hermite_polynomial.h"
 #include "src/error.h"
 #include "src/nurbs/basis.h"

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "designers/cam/message_text.h"
+#include "src/message_text.h"
 #include "src/error.h"
 
 namespace polarform {

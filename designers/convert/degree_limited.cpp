@@ -8,6 +8,7 @@
 
 #include "designers/convert/conversion_error.h"
 #include "src/error.h"
+#include "src/message_text.h"
 #include "src/nurbs/basis.h"
 #include "src/nurbs/periodic.h"
 
@@ -134,7 +135,7 @@ LimitedCurve approximate_polar_curve(const PolarFunction& R, int degree, double 
   }
   throw NumericalError("degree-limited profile: no degree-" + std::to_string(degree) +
                        " spline with up to " + std::to_string(kMaxSpans) + " spans meets " +
-                       std::to_string(tol) + " mm");
+                       number_text(tol) + " mm");
 }
 
 LimitedCurve interpolate_polar_curve(const PolarFunction& R, int degree, double tol) {
@@ -148,7 +149,7 @@ LimitedCurve interpolate_polar_curve(const PolarFunction& R, int degree, double 
     hi *= 2;
     if (hi > kMaxSpans)
       throw NumericalError("interpolation: " + std::to_string(kMaxSpans) +
-                           " points do not meet " + std::to_string(tol) + " mm");
+                           " points do not meet " + number_text(tol) + " mm");
     best = interpolation(R, degree, hi);
   }
   while (hi - lo > 1) {

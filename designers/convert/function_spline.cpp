@@ -6,6 +6,7 @@
 
 #include "designers/convert/golden_section.h"
 #include "src/error.h"
+#include "src/message_text.h"
 #include "src/fit/constrained_least_squares.h"
 #include "src/nurbs/basis.h"
 #include "src/nurbs/knot_removal.h"
@@ -182,10 +183,10 @@ FunctionSpline represent_as_bspline(const PolarFunction& R, double tol) {
       }
       const int spans = static_cast<int>(breaks.size()) - 1;
       if (round == 12 || spans > 5000)
-        throw NumericalError("representing R(θ) as a B-spline: error " + std::to_string(e) +
-                             " mm with " + std::to_string(spans) + " spans on [" +
-                             std::to_string(grid[s]) + ", " + std::to_string(grid[s + 1]) +
-                             "] rad still exceeds " + std::to_string(target) + " mm");
+        throw NumericalError("representing R(θ) as a B-spline: error " + number_text(e) +
+                             " mm with " + std::to_string(spans) + " spans between " +
+                             degrees_text(grid[s]) + " and " + degrees_text(grid[s + 1]) +
+                             " still exceeds " + number_text(target) + " mm");
       breaks = spans == 1 ? std::vector<double>{grid[s], grid[s] + (grid[s + 1] - grid[s]) / 4,
                                                grid[s] + (grid[s + 1] - grid[s]) / 2,
                                                grid[s] + 3 * (grid[s + 1] - grid[s]) / 4, grid[s + 1]}

@@ -7,11 +7,14 @@
 #include "designers/convert/conversion_error.h"
 #include "designers/convert/function_spline.h"
 #include "src/error.h"
+#include "src/message_text.h"
 #include "src/nurbs/symbolic_product.h"
 
 namespace polarform {
 
 namespace {
+
+constexpr std::size_t kMaxArcs = 2000;
 
 // Measures every arc of C; returns the indices of the arcs over the tolerance.
 std::vector<int> measure_arcs(const NurbsCurve2d& C, const PolarFunction& R,
@@ -58,9 +61,13 @@ PolarConversion convert_polar_function(const PolarFunction& R, const ConversionO
     out.curve = product(F.spline, out.base.curve());
     const std::vector<int> failing = measure_arcs(out.curve, R, breaks, out);
     if (failing.empty()) break;
-    if (round == 20)
-      throw NumericalError("conversion: measured error " + std::to_string(out.max_radial_error) +
-                           " mm still exceeds the tolerance after 20 refinements");
+    // Splitting can only approach the round-off floor of R's evaluation; stop long before the
+    // arc count explodes.
+    if (round == 20 || breaks.size() + failing.size() > kMaxArcs + 1)
+      throw NumericalError("conversion: measured error " + number_text(out.max_radial_error) +
+                           " mm still exceeds the tolerance " + number_text(options.tolerance) +
+                           " mm with " + std::to_string(breaks.size() - 1) +
+                           " arcs; the tolerance is below what this profile can reach");
     for (auto j = failing.rbegin(); j != failing.rend(); ++j)
       breaks.insert(breaks.begin() + *j + 1, 0.5 * (breaks[*j] + breaks[*j + 1]));
   }

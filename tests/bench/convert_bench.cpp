@@ -33,7 +33,7 @@ CamDesign roller_example() {
 void BM_RollerCamConversion1um(benchmark::State& state) {
   const CamDesign design = roller_example();
   ConversionOptions options;
-  options.tolerance = 1e-3 * 1e-3;
+  options.tolerance = 1e-3;  // mm: 1 µm
   for (auto _ : state) {
     const PlateCam cam = make_plate_cam(design);
     const PolarConversion c = convert_polar_function(cam_polar_function(cam), options);
@@ -48,7 +48,7 @@ void BM_RollerCamDesignUpdate10um(benchmark::State& state) {
   const CamDesign design = roller_example();
   const std::vector<double> grid = uniform_angles(360);
   ConversionOptions options;
-  options.tolerance = 10e-3 * 1e-3;
+  options.tolerance = 10e-3;  // mm: 10 µm
   for (auto _ : state) {
     const PlateCam cam = make_plate_cam(design);
     const CamAnalysis analysis = analyse(cam, grid);
@@ -58,6 +58,39 @@ void BM_RollerCamDesignUpdate10um(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_RollerCamDesignUpdate10um)->Unit(benchmark::kMillisecond);
+
+// The design update's parts: analyses over 360 angles, the contour's polar function (its ψ(θ)
+// table), and the conversion at 10 µm of a prepared polar function.
+void BM_RollerCamAnalysis360(benchmark::State& state) {
+  const PlateCam cam = make_plate_cam(roller_example());
+  const std::vector<double> grid = uniform_angles(360);
+  for (auto _ : state) benchmark::DoNotOptimize(analyse(cam, grid).max_pressure_angle);
+}
+BENCHMARK(BM_RollerCamAnalysis360)->Unit(benchmark::kMillisecond);
+
+void BM_RollerCamPolarFunction(benchmark::State& state) {
+  const PlateCam cam = make_plate_cam(roller_example());
+  for (auto _ : state) benchmark::DoNotOptimize(cam_polar_function(cam).start);
+}
+BENCHMARK(BM_RollerCamPolarFunction)->Unit(benchmark::kMillisecond);
+
+void BM_RollerCamContourEvaluation(benchmark::State& state) {
+  const PolarFunction R = cam_polar_function(make_plate_cam(roller_example()));
+  double psi = R.start;
+  for (auto _ : state) {
+    psi = psi + 0.001 > R.end ? R.start : psi + 0.001;
+    benchmark::DoNotOptimize(R(psi));
+  }
+}
+BENCHMARK(BM_RollerCamContourEvaluation);
+
+void BM_RollerCamConvert10um(benchmark::State& state) {
+  const PolarFunction R = cam_polar_function(make_plate_cam(roller_example()));
+  ConversionOptions options;
+  options.tolerance = 10e-3;  // mm
+  for (auto _ : state) benchmark::DoNotOptimize(convert_polar_function(R, options).max_radial_error);
+}
+BENCHMARK(BM_RollerCamConvert10um)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace polarform

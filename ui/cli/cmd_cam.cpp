@@ -39,6 +39,7 @@ void run(const CamArgs& a) {
   options.bore_diameter = a.bore;
   const std::vector<std::string> files = write_cam_outputs(r, a.out, options);
 
+  for (const std::string& w : r.warnings) std::cerr << "polarform: warning: " << w << "\n";
   for (const ContinuityIssue& issue : r.continuity)
     std::cerr << "polarform: motion: " << issue.message() << "\n";
   if (a.quiet) return;

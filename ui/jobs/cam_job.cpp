@@ -44,9 +44,15 @@ CamJobResult run_cam_job(const CamProject& project, const CamJobOptions& options
     r.profile_function = cam_polar_function(*r.plate);
     r.conversion = convert_polar_function(r.profile_function, project.conversion);
     r.profile = r.conversion.curve;
-    if (options.with_limited)
-      r.limited = approximate_polar_curve(r.profile_function, options.limited_degree,
-                                          project.conversion.tolerance);
+    // The degree-limited profile is an extra: when its degree cannot reach the tolerance the
+    // exact profile still stands, so the job says so instead of failing.
+    if (options.with_limited) try {
+        r.limited = approximate_polar_curve(r.profile_function, options.limited_degree,
+                                            project.conversion.tolerance);
+      } catch (const NumericalError& e) {
+        r.warnings.push_back("degree-" + std::to_string(options.limited_degree) +
+                             " profile not written: " + e.what());
+      }
     if (project.max_degree && r.profile.degree() > *project.max_degree)
       r.capped = approximate_polar_curve(r.profile_function, *project.max_degree,
                                          project.conversion.tolerance);

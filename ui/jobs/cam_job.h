@@ -5,6 +5,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "designers/cam/cam_analysis.h"
@@ -41,6 +42,8 @@ struct CamJobResult {
   std::optional<LimitedCurve> limited;  // plate cams: degree-limited contour
   // Plate cams whose exact degree exceeds the project's max-degree: the profile to export instead.
   std::optional<LimitedCurve> capped;
+  // What the job left out and why (e.g. a degree-limited profile that cannot meet the tolerance).
+  std::vector<std::string> warnings;
   double seconds = 0.0;            // wall time of the computation
 };
 

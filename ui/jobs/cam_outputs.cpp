@@ -193,6 +193,7 @@ json cam_report_json(const CamJobResult& r, const std::vector<std::string>& file
   }
   const double omega = 2 * std::numbers::pi * d.rpm / 60;
   j["speed_rad_per_s"] = omega;
+  j["warnings"] = r.warnings;
   if (r.limited)
     j["degree_limited"] = {{"degree", r.limited->curve.degree()},
                            {"control_points", r.limited->control_points},

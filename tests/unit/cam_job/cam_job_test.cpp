@@ -123,5 +123,19 @@ TEST(CamJob, RefusesToleranceBelowTheFloor) {
   }
 }
 
+// The degree-3 extra cannot follow the harmonic return's acceleration jump down to 1e-8 mm with
+// uniform knots; the exact profile can, so the job warns and goes on.
+TEST(CamJob, UnreachableDegreeLimitedProfileIsAWarningNotAFailure) {
+  EXPECT_TRUE(example("roller").result.warnings.empty());
+  CamProject p = load_example("offset_roller");
+  p.conversion.tolerance = 1e-8;
+  const CamJobResult r = run_cam_job(p);
+  EXPECT_FALSE(r.limited.has_value());
+  ASSERT_EQ(r.warnings.size(), 1u);
+  EXPECT_NE(r.warnings[0].find("degree-3 profile not written"), std::string::npos) << r.warnings[0];
+  EXPECT_NE(r.warnings[0].find("1e-08 mm"), std::string::npos) << r.warnings[0];
+  EXPECT_LE(r.conversion.max_radial_error, 1e-8);
+}
+
 }  // namespace
 }  // namespace polarform

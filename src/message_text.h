@@ -1,5 +1,5 @@
-// Numbers in messages: the cam works in radians and mm, users read degrees and short numbers. One
-// formatting rule for every diagnostic and error of the cam designer ("127.5°", "0.25").
+// Numbers in messages: polarform works in radians and mm, users read degrees and short numbers. One
+// formatting rule for every diagnostic and error of polarform ("127.5°", "0.25").
 #pragma once
 
 #include <string>

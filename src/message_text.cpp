@@ -1,4 +1,4 @@
-#include "designers/cam/message_text.h"
+#include "src/message_text.h"
 
 #include <locale>
 #include <numbers>
