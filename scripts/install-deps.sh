@@ -9,7 +9,7 @@ packages=(
   libglfw3-dev libimgui-dev libstb-dev libgl-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libocct-data-exchange-dev libocct-modeling-algorithms-dev python3-ezdxf
-  xvfb xauth libgl1-mesa-dri
+  xvfb xauth libgl1-mesa-dri fonts-dejavu-core
 )
 
 missing=()

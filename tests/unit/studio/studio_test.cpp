@@ -1,0 +1,287 @@
+// polarform-studio end to end under Xvfb + Mesa: every workspace renders a settled frame that is
+// not blank (pixel statistics of the PNG), a scripted edit (--bench-frames) changes the numbers
+// the app reports, and bad input — a broken project, an infeasible design — is reported while the
+// app keeps running. Skips with a message when xvfb-run or the studio binary is missing.
+#include <gtest/gtest.h>
+
+#define STB_IMAGE_IMPLEMENTATION
+#include <stb/stb_image.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <numbers>
+#include <random>
+#include <set>
+#include <sstream>
+#include <string>
+#include <thread>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kStudio = fs::path(POLARFORM_BINARY_DIR) / "ui" / "studio" / "polarform-studio";
+const fs::path kExamples = fs::path(POLARFORM_SOURCE_DIR) / "examples";
+
+struct StudioRun {
+  int status = -1;
+  std::string output;  // stdout and stderr
+};
+
+StudioRun run_once(const std::string& command) {
+  StudioRun r;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return r;
+  char buffer[4096];
+  while (std::fgets(buffer, sizeof buffer, pipe)) r.output += buffer;
+  const int status = pclose(pipe);
+  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+// Runs the app on its own Xvfb display. `xvfb-run -a` picks a free display number, but two runs
+// started together (ctest -j) may pick the same one; the loser's server fails to start and the
+// run is repeated.
+StudioRun run_studio(const std::string& arguments) {
+  const std::string command =
+      "xvfb-run -a -s '-screen 0 1920x1200x24' '" + kStudio.string() + "' " + arguments + " 2>&1";
+  StudioRun r;
+  for (int attempt = 0; attempt < 5; ++attempt) {
+    r = run_once(command);
+    if (r.output.find("Xvfb failed to start") == std::string::npos &&
+        r.output.find("cannot initialise GLFW") == std::string::npos)
+      break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(300 + 400 * attempt));
+  }
+  return r;
+}
+
+// "key=value" lines of one block of the output (after `header`, up to the next line without '=').
+std::map<std::string, std::string> numbers(const std::string& output,
+                                           const std::string& header = "") {
+  std::map<std::string, std::string> out;
+  std::istringstream in(output);
+  std::string line;
+  bool inside = header.empty();
+  while (std::getline(in, line)) {
+    if (!inside) {
+      inside = line == header;
+      continue;
+    }
+    const auto eq = line.find('=');
+    if (eq == std::string::npos) {
+      if (!out.empty()) break;
+      continue;
+    }
+    out[line.substr(0, eq)] = line.substr(eq + 1);
+  }
+  return out;
+}
+
+double number(const std::map<std::string, std::string>& m, const std::string& key) {
+  const auto it = m.find(key);
+  if (it == m.end()) {
+    ADD_FAILURE() << "no '" << key << "' in the reported numbers";
+    return std::nan("");
+  }
+  return std::stod(it->second);
+}
+
+int error_count(const std::string& output) {
+  const auto at = output.rfind("errors: ");
+  return at == std::string::npos ? -1 : std::stoi(output.substr(at + 8));
+}
+
+struct PixelStats {
+  int width = 0, height = 0;
+  double luminance_stddev = 0.0;
+  std::size_t colours = 0;      // distinct RGB values
+  double off_background = 0.0;  // fraction of pixels differing from the most common colour
+};
+
+PixelStats pixel_stats(const fs::path& png) {
+  PixelStats s;
+  int channels = 0;
+  unsigned char* data = stbi_load(png.c_str(), &s.width, &s.height, &channels, 3);
+  if (!data) return s;
+  const std::size_t n = static_cast<std::size_t>(s.width) * s.height;
+  std::map<unsigned, std::size_t> histogram;
+  double sum = 0.0, sum2 = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const unsigned char* p = data + 3 * i;
+    const double y = 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+    sum += y;
+    sum2 += y * y;
+    ++histogram[(p[0] << 16) | (p[1] << 8) | p[2]];
+  }
+  stbi_image_free(data);
+  const double mean = sum / n;
+  s.luminance_stddev = std::sqrt(std::max(0.0, sum2 / n - mean * mean));
+  s.colours = histogram.size();
+  std::size_t most = 0;
+  for (const auto& [colour, count] : histogram) most = std::max(most, count);
+  s.off_background = 1.0 - static_cast<double>(most) / n;
+  return s;
+}
+
+class StudioTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (std::system("command -v xvfb-run > /dev/null 2>&1") != 0)
+      GTEST_SKIP()
+          << "xvfb-run not found: install the Debian packages xvfb, xauth and libgl1-mesa-dri "
+             "(scripts/install-deps.sh) to run the studio tests";
+    if (!fs::exists(kStudio))
+      GTEST_SKIP() << "polarform-studio was not built (" << kStudio
+                   << "); build it with POLARFORM_BUILD_STUDIO=ON";
+    dir_ = fs::temp_directory_path() /
+           ("polarform_studio_test_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    std::error_code ec;
+    if (!dir_.empty()) fs::remove_all(dir_, ec);
+  }
+
+  // Renders `workspace` for `project` and checks the picture is a real frame, not a blank one.
+  StudioRun screenshot(const fs::path& project, const std::string& workspace) {
+    const fs::path png = dir_ / (workspace + ".png");
+    StudioRun r = run_studio("--project '" + project.string() + "' --workspace " + workspace +
+                             " --screenshot '" + png.string() + "' --size 1280x800");
+    EXPECT_EQ(r.status, 0) << r.output;
+    const PixelStats s = pixel_stats(png);
+    EXPECT_EQ(s.width, 1280) << r.output;
+    EXPECT_EQ(s.height, 800);
+    EXPECT_GT(s.luminance_stddev, 20.0) << "a nearly uniform picture";
+    EXPECT_GT(s.colours, 500u) << "too few colours for plots, text and shading";
+    EXPECT_GT(s.off_background, 0.2) << "most of the picture is one colour";
+    return r;
+  }
+
+  fs::path write(const std::string& name, const std::string& text) {
+    const fs::path file = dir_ / name;
+    std::ofstream(file) << text;
+    return file;
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(StudioTest, CamWorkspaceRendersAndMeetsItsTolerance) {
+  const StudioRun r = screenshot(kExamples / "cams" / "roller.xml", "cam");
+  const auto n = numbers(r.output);
+  EXPECT_EQ(number(n, "segments"), 4);
+  EXPECT_NEAR(number(n, "stroke_mm"), 20.0, 1e-9);
+  EXPECT_GT(number(n, "max_pressure_angle_deg"), 5.0);
+  EXPECT_LT(number(n, "max_pressure_angle_deg"), 45.0);
+  EXPECT_GT(number(n, "arcs"), 0);
+  EXPECT_LE(number(n, "max_radial_error_mm"), number(n, "tolerance_mm"));
+  EXPECT_EQ(error_count(r.output), 0) << r.output;
+}
+
+TEST_F(StudioTest, StudyWorkspaceRendersAToleranceSweep) {
+  const StudioRun r = screenshot(kExamples / "cams" / "roller.xml", "study");
+  const auto n = numbers(r.output);
+  EXPECT_EQ(number(n, "studied"), 1) << r.output;
+  EXPECT_EQ(number(n, "tolerances"), 9);
+  EXPECT_LE(number(n, "tightest_quartic_error_mm"), number(n, "tightest_tolerance_mm"));
+  // The point of the quasi-uniform quartic base: far fewer control points than the RQB base.
+  EXPECT_LT(number(n, "tightest_quartic_control_points"), number(n, "tightest_rqb_control_points"));
+  EXPECT_EQ(error_count(r.output), 0) << r.output;
+}
+
+TEST_F(StudioTest, VesselWorkspaceRendersASolvedHead) {
+  const StudioRun r = screenshot(kExamples / "vessels" / "torispherical_100_6.xml", "vessel");
+  const auto n = numbers(r.output);
+  EXPECT_EQ(number(n, "solved"), 1) << r.output;
+  EXPECT_GT(number(n, "depth_mm"), 50.0);
+  EXPECT_LT(number(n, "depth_mm"), 500.0);
+  EXPECT_EQ(error_count(r.output), 0) << r.output;
+}
+
+TEST_F(StudioTest, FitWorkspaceRendersTheFittedScan) {
+  // An ellipsoid-like scan, open at the bottom, with noise.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::normal_distribution<double> noise(0.0, 0.01);
+  std::ostringstream text;
+  for (int i = 0; i < 8000; ++i) {
+    const double z = -0.8 + 1.8 * u(rng), phi = std::acos(std::min(1.0, z)),
+                 theta = 2 * std::numbers::pi * u(rng);
+    const double r =
+        40.0 * (1.0 + 0.05 * std::cos(2 * theta) * std::sin(phi) * std::sin(phi)) + noise(rng);
+    text << r * std::sin(phi) * std::cos(theta) + 10 << ' '
+         << 0.8 * r * std::sin(phi) * std::sin(theta) << ' ' << 0.6 * r * std::cos(phi) + 5 << '\n';
+  }
+  const StudioRun r = screenshot(write("scan.xyz", text.str()), "fit");
+  const auto n = numbers(r.output);
+  EXPECT_EQ(number(n, "points"), 8000);
+  EXPECT_EQ(number(n, "fitted"), 1) << r.output;
+  EXPECT_LT(number(n, "rms_mm"), 1.0);
+}
+
+TEST_F(StudioTest, ScriptedEditChangesTheReportedNumbers) {
+  const StudioRun r = run_studio("--project '" + (kExamples / "cams" / "roller.xml").string() +
+                                 "' --workspace cam --bench-frames 20 --size 1280x800");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const auto before = numbers(r.output, "before:"), after = numbers(r.output, "after:");
+  EXPECT_NE(number(before, "boundary_1_deg"), number(after, "boundary_1_deg"));
+  EXPECT_NE(number(before, "max_pressure_angle_deg"), number(after, "max_pressure_angle_deg"));
+  EXPECT_NE(r.output.find("frame time: mean"), std::string::npos) << r.output;
+  EXPECT_EQ(error_count(r.output), 0) << r.output;
+}
+
+TEST_F(StudioTest, VesselScriptedEditResolvesTheHead) {
+  // The pressure raised by 50 %: the head is solved again and the membrane hoop stress, linear in
+  // the pressure, rises by the same factor.
+  const StudioRun r =
+      run_studio("--project '" + (kExamples / "vessels" / "torispherical_100_6.xml").string() +
+                 "' --workspace vessel --bench-frames 10 --size 1280x800");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const auto before = numbers(r.output, "before:"), after = numbers(r.output, "after:");
+  EXPECT_NEAR(number(after, "pressure_mpa") / number(before, "pressure_mpa"), 1.5, 1e-12);
+  EXPECT_NEAR(number(after, "max_hoop_stress_mpa") / number(before, "max_hoop_stress_mpa"), 1.5,
+              1e-3);
+  EXPECT_EQ(number(after, "solved"), 1);
+  EXPECT_EQ(error_count(r.output), 0) << r.output;
+}
+
+TEST_F(StudioTest, BrokenProjectIsReportedAndTheSessionGoesOn) {
+  const fs::path broken =
+      write("broken.xml", "<polarform version=\"1\"><cam type=\"plate\" base-radius=\"40\"");
+  const fs::path png = dir_ / "broken.png";
+  const StudioRun r = run_studio("--project '" + broken.string() + "' --screenshot '" +
+                                 png.string() + "' --size 1280x800");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(error_count(r.output), 1) << r.output;
+  EXPECT_NE(r.output.find("broken.xml"), std::string::npos) << "the message names the file";
+  const PixelStats s = pixel_stats(png);  // the app still drew its workspace (the template picker)
+  EXPECT_EQ(s.width, 1280);
+  EXPECT_GT(s.colours, 50u);
+}
+
+TEST_F(StudioTest, InfeasibleDesignIsReportedAndTheSessionGoesOn) {
+  // The rise and the return do not cancel: CamProgram refuses it.
+  const fs::path bad = write("unbalanced.xml", R"(<polarform version="1">
+  <cam type="plate" follower="roller" base-radius="40" roller-radius="10" rpm="300">
+    <segment kind="rise" law="cycloidal" lift="20" to="180"/>
+    <segment kind="return" law="cycloidal" lift="15" to="360"/>
+  </cam>
+</polarform>
+)");
+  const fs::path png = dir_ / "unbalanced.png";
+  const StudioRun r = run_studio("--project '" + bad.string() + "' --workspace cam --screenshot '" +
+                                 png.string() + "' --size 1280x800");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_GE(error_count(r.output), 1) << r.output;
+  EXPECT_EQ(number(numbers(r.output), "valid"), 0) << r.output;
+  EXPECT_GT(pixel_stats(png).colours, 50u);
+}
+
+}  // namespace

@@ -1,0 +1,75 @@
+// The app shell: the window, the workspaces, the menu bar (projects, recent files, templates,
+// export, undo/redo, workspaces), keyboard shortcuts, drag-and-drop, the log panel and toasts,
+// the persisted state, and the three ways to run — interactive, --screenshot and --bench-frames.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "ui/studio/file_dialog.h"
+#include "ui/studio/log_panel.h"
+#include "ui/studio/message_log.h"
+#include "ui/studio/persistent_state.h"
+#include "ui/studio/platform_window.h"
+#include "ui/studio/studio_options.h"
+#include "ui/studio/workspace.h"
+
+namespace polarform::studio {
+
+class App {
+ public:
+  // Throws std::runtime_error when the window cannot be created.
+  explicit App(StudioOptions options);
+  ~App();
+
+  // Runs the mode the options ask for; returns the process exit code.
+  int run();
+
+ private:
+  int run_interactive();
+  int run_screenshot();
+  int run_bench();
+  // Renders frames until no workspace is busy (at least a few, for ImGui's layout); false on
+  // timeout.
+  bool settle();
+  // One frame: compose() updates the workspaces and builds the UI, then the window renders it.
+  void frame();
+  void compose();
+
+  void draw_main_window();
+  void draw_menu_bar();
+  void draw_file_menu();
+  void draw_shortcuts_window();
+  void draw_discard_dialog();
+  void handle_shortcuts();
+  void handle_dialog();
+
+  Workspace* workspace(WorkspaceKind kind);
+  Workspace& active();
+  void open_document(const std::filesystem::path& file, bool as_template = false);
+  void save(bool choose_path);
+  void ask_to_open();
+  void update_title();
+
+  StudioOptions options_;
+  bool persist_;
+  std::filesystem::path state_file_;
+  PersistentState state_;
+  MessageLog log_;
+  StudioContext context_;
+  std::unique_ptr<PlatformWindow> window_;
+  std::vector<std::unique_ptr<Workspace>> workspaces_;
+  WorkspaceKind active_ = WorkspaceKind::cam;
+  std::optional<WorkspaceKind> select_tab_;
+  LogPanel log_panel_;
+  FileDialog dialog_;
+  enum class DialogPurpose { open, save_as, export_file } purpose_ = DialogPurpose::open;
+  ExportRequest pending_export_;
+  bool show_shortcuts_ = false;
+  bool confirm_quit_ = false, ask_discard_ = false;
+  std::string title_;
+};
+
+}  // namespace polarform::studio

@@ -1,0 +1,79 @@
+#include "ui/studio/fit_options_panel.h"
+
+#include <imgui.h>
+
+#include <array>
+#include <string_view>
+
+#include "ui/studio/widgets.h"
+
+namespace polarform::studio {
+
+RotationalFitOptions to_fit_options(const FitSettings& s, int threads) {
+  FunctionFitOptions f;
+  f.degree_u = s.degree_u;
+  f.degree_v = s.degree_v;
+  if (s.use_tolerance) {
+    f.tolerance = s.tolerance;
+    f.measure = static_cast<ToleranceMeasure>(s.measure);
+  } else {
+    f.size_u = s.size_u;
+    f.size_v = s.size_v;
+  }
+  f.fairness.mode = static_cast<FairnessOptions::Mode>(s.fairness);
+  f.fairness.weight = s.fairness_weight;
+  f.threads = threads;
+  RotationalFitOptions o;
+  o.spherical.function = f;
+  o.cylindrical.function = f;
+  o.spherical.frame.quadric.threads = threads;
+  o.cylindrical.frame.quadric.threads = threads;
+  const ArcKind base = s.quartic_base ? ArcKind::quartic : ArcKind::rqb;
+  o.spherical.base_kind = o.cylindrical.base_kind = base;
+  o.spherical.closure = o.cylindrical.closure = static_cast<Closure>(s.closure);
+  o.spherical.north = o.spherical.south = static_cast<PoleTreatment>(s.pole);
+  if (s.method == 1) o.method = FitMethod::spherical;
+  if (s.method == 2) o.method = FitMethod::cylindrical;
+  return o;
+}
+
+bool draw_fit_options(FitSettings& s) {
+  bool changed = false;
+  ImGui::PushItemWidth(ImGui::GetFontSize() * 9);
+  static constexpr std::array<std::string_view, 3> kMethods = {"automatic (quadric type)",
+                                                               "spherical", "cylindrical"};
+  changed |= combo("method", s.method, kMethods);
+  help_marker(
+      "Automatic: sphere-like quadrics are fitted spherically, cylinder-like ones cylindrically; "
+      "where the "
+      "type does not decide, both are fitted and the smaller error wins (Bae 2002, §4.3).");
+  changed |= input_int("degree along u", s.degree_u, 1, 7);
+  changed |= input_int("degree along v", s.degree_v, 1, 7);
+  changed |= ImGui::Checkbox("refine to a tolerance", &s.use_tolerance);
+  if (s.use_tolerance) {
+    changed |= log_slider("distance [mm]", s.tolerance, 1e-5, 10.0, "%.3g");
+    static constexpr std::array<std::string_view, 4> kMeasures = {"max", "99th percentile",
+                                                                  "95th percentile", "RMS"};
+    changed |= combo("of the", s.measure, kMeasures);
+    help_marker(
+        "The statistic of the true point-to-surface distance the tolerance bounds. Scan noise "
+        "makes the "
+        "max unreachable; the 99th percentile ignores the worst 1 % of the points.");
+  } else {
+    changed |= input_int("control values u", s.size_u, 2, 200);
+    changed |= input_int("control values v", s.size_v, 2, 200);
+  }
+  static constexpr std::array<std::string_view, 3> kFairness = {"fixed λ", "relative λ", "GCV"};
+  changed |= combo("fairness", s.fairness, kFairness);
+  if (s.fairness != 2) changed |= log_slider("λ", s.fairness_weight, 1e-12, 1.0, "%.2g");
+  changed |= ImGui::Checkbox("quasi-uniform quartic base arcs", &s.quartic_base);
+  static constexpr std::array<std::string_view, 3> kClosure = {"automatic", "open", "closed"};
+  changed |= combo("closure in θ", s.closure, kClosure);
+  static constexpr std::array<std::string_view, 5> kPoles = {"automatic", "none", "G0 point",
+                                                             "G1 point", "cap surface"};
+  changed |= combo("poles (spherical)", s.pole, kPoles);
+  ImGui::PopItemWidth();
+  return changed;
+}
+
+}  // namespace polarform::studio

@@ -1,0 +1,31 @@
+// The surface-fit options a user chooses in the fit workspace — method (automatic from the
+// quadric, spherical, cylindrical), degrees, a tolerance or a fixed control net, fairness, base
+// arcs, closure and pole treatment — and their translation into the fitter's RotationalFitOptions.
+#pragma once
+
+#include "src/fit/rotational_fit.h"
+
+namespace polarform::studio {
+
+struct FitSettings {
+  int method = 0;  // 0 automatic, 1 spherical, 2 cylindrical
+  int degree_u = 3, degree_v = 3;
+  bool use_tolerance = true;
+  double tolerance = 0.1;  // mm, on the true distance statistic `measure`
+  int measure = 1;         // ToleranceMeasure: scans are noisy, so p99 rather than the max
+  int size_u = 12, size_v = 12;
+  int fairness = 1;  // FairnessOptions::Mode
+  double fairness_weight = 1e-7;
+  bool quartic_base = false;
+  int closure = 0;  // Closure
+  int pole = 0;     // PoleTreatment (spherical), both poles
+
+  bool operator==(const FitSettings&) const = default;
+};
+
+RotationalFitOptions to_fit_options(const FitSettings& settings, int threads);
+
+// Draws the options; true when one changed.
+bool draw_fit_options(FitSettings& settings);
+
+}  // namespace polarform::studio

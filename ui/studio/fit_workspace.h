@@ -1,0 +1,80 @@
+// The fit workspace: open a point cloud (dialog or drag-and-drop; read in the background with a
+// progress bar), see it in 3D with its estimated local frame and quadric type, choose the fit
+// options, run the spherical / cylindrical / automatic fit in the background with progress and
+// cancel, and inspect the fitted surface (shaded, control net), the deviation colour map on the
+// points, and the fit report; export the surface.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "src/fit/rotational_fit.h"
+#include "ui/studio/background_task.h"
+#include "ui/studio/fit_options_panel.h"
+#include "ui/studio/scene_view.h"
+#include "ui/studio/workspace.h"
+
+namespace polarform::studio {
+
+struct LoadedCloud {
+  std::filesystem::path file;
+  Eigen::Matrix3Xd points;
+  std::size_t dropped = 0;
+  double read_seconds = 0.0;
+  std::optional<FrameEstimate> frame;
+  std::string frame_error;
+  SceneBounds bounds;
+  PointSet display;  // relative to bounds.center()
+};
+
+struct FitRun {
+  FitSettings settings;
+  RotationalFit fit;
+  PointSet deviation;  // points coloured by signed distance
+  double scale = 0.0;  // |distance| at the ends of the colour map (the 99th percentile), mm
+};
+
+class FitWorkspace : public Workspace {
+ public:
+  explicit FitWorkspace(StudioContext& context);
+
+  WorkspaceKind kind() const override { return WorkspaceKind::fit; }
+  void update() override;
+  bool busy() const override { return load_task_.busy() || fit_task_.busy(); }
+  void draw() override;
+
+  bool open(const std::filesystem::path& file, bool as_template) override;
+  std::filesystem::path document_path() const override {
+    return cloud_ ? cloud_->file : std::filesystem::path();
+  }
+  std::string document_name() const override;
+
+  std::optional<ExportRequest> draw_export_menu() override;
+  void export_to(const ExportRequest& request, const std::filesystem::path& file) override;
+
+  void bench_step(int frame, int frames) override;
+  std::string numbers() const override;
+
+ private:
+  void start_fit();
+  void draw_controls();
+  void draw_report();
+  void draw_view();
+  void show_cloud();
+  void show_fit();
+
+  BackgroundTask<LoadedCloud> load_task_;
+  BackgroundTask<FitRun> fit_task_;
+  std::shared_ptr<const LoadedCloud> cloud_;
+  std::optional<FitRun> fit_;
+  FitSettings settings_;
+  std::filesystem::path loading_;
+  std::string fit_error_;
+  double fit_seconds_ = 0.0;
+  bool fit_on_open_ = true;
+  bool show_deviation_ = true;
+  SceneView scene_;
+};
+
+}  // namespace polarform::studio

@@ -1,0 +1,215 @@
+#include "ui/studio/segment_table.h"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <array>
+#include <string>
+#include <string_view>
+
+#include "designers/cam/motion_law.h"
+#include "ui/studio/segment_edits.h"
+#include "ui/studio/widgets.h"
+
+namespace polarform::studio {
+namespace {
+
+constexpr double kDefaultLift = 10.0;  // mm, for a dwell turned into a rise or return
+
+constexpr std::array<MotionLaw, 8> kLaws = {MotionLaw::Cycloidal,     MotionLaw::SimpleHarmonic,
+                                            MotionLaw::ModifiedSine,  MotionLaw::ModifiedTrapezoid,
+                                            MotionLaw::Polynomial345, MotionLaw::Polynomial4567,
+                                            MotionLaw::Polynomial,    MotionLaw::BSpline};
+constexpr std::array<SegmentKind, 3> kKinds = {SegmentKind::Dwell, SegmentKind::Rise,
+                                               SegmentKind::Return};
+
+template <class Enum, std::size_t N>
+int index_of(const std::array<Enum, N>& values, Enum v) {
+  for (std::size_t i = 0; i < N; ++i)
+    if (values[i] == v) return static_cast<int>(i);
+  return 0;
+}
+
+bool endpoint_inputs(const char* id, EndpointDerivatives& e, int order) {
+  bool changed = false;
+  ImGui::PushID(id);
+  if (order >= 1) changed |= input_number("velocity [mm/rad]", e.velocity, 1.0);
+  if (order >= 2) changed |= input_number("acceleration [mm/rad²]", e.acceleration, 1.0);
+  if (order >= 3) changed |= input_number("jerk [mm/rad³]", e.jerk, 1.0);
+  ImGui::PopID();
+  return changed;
+}
+
+}  // namespace
+
+bool SegmentTable::draw(std::vector<SegmentSpec>& segments) {
+  bool changed = false;
+  if (segments.empty()) {
+    ImGui::TextDisabled("No segments.");
+    return false;
+  }
+  selected_ = std::clamp(selected_, 0, static_cast<int>(segments.size()) - 1);
+  const ImGuiTableFlags flags =
+      ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp;
+  if (ImGui::BeginTable("segments", 6, flags)) {
+    ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_WidthFixed);
+    ImGui::TableSetupColumn("kind", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+    ImGui::TableSetupColumn("law", ImGuiTableColumnFlags_WidthStretch, 1.6f);
+    ImGui::TableSetupColumn("start [°]", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+    ImGui::TableSetupColumn("end [°]", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+    ImGui::TableSetupColumn("lift [mm]", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+    ImGui::TableHeadersRow();
+    for (int i = 0; i < static_cast<int>(segments.size()); ++i) changed |= draw_row(segments, i);
+    ImGui::EndTable();
+  }
+  changed |= draw_buttons(segments);
+  ImGui::Separator();
+  changed |= draw_details(segments[selected_]);
+  return changed;
+}
+
+bool SegmentTable::draw_row(std::vector<SegmentSpec>& segments, int i) {
+  bool changed = false;
+  SegmentSpec& s = segments[i];
+  const int last = static_cast<int>(segments.size()) - 1;
+  ImGui::PushID(i);
+  ImGui::TableNextRow();
+  ImGui::TableNextColumn();
+  if (ImGui::Selectable(
+          std::to_string(i + 1).c_str(), selected_ == i,
+          ImGuiSelectableFlags_SpanAllColumns | ImGuiSelectableFlags_AllowItemOverlap))
+    selected_ = i;
+  if (!s.name.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", s.name.c_str());
+
+  ImGui::TableNextColumn();
+  ImGui::SetNextItemWidth(-FLT_MIN);
+  int kind = index_of(kKinds, s.kind);
+  static constexpr std::array<std::string_view, 3> kKindNames = {"dwell", "rise", "return"};
+  if (combo("##kind", kind, kKindNames)) {
+    set_kind(s, kKinds[kind], kDefaultLift);
+    changed = true;
+  }
+
+  ImGui::TableNextColumn();
+  ImGui::SetNextItemWidth(-FLT_MIN);
+  if (s.kind == SegmentKind::Dwell) {
+    ImGui::TextDisabled("—");
+  } else {
+    std::array<std::string_view, kLaws.size()> names;
+    for (std::size_t k = 0; k < kLaws.size(); ++k) names[k] = motion_law_name(kLaws[k]);
+    int law = index_of(kLaws, s.law);
+    if (combo("##law", law, names)) {
+      s.law = kLaws[law];
+      changed = true;
+    }
+  }
+
+  // Start and end edit the shared boundaries; 0° and 360° stay fixed.
+  ImGui::TableNextColumn();
+  ImGui::SetNextItemWidth(-FLT_MIN);
+  if (i == 0) {
+    ImGui::TextDisabled("%.2f", s.start / kDegree);
+  } else {
+    double start = s.start;
+    if (drag_angle("##start", start, 0.0, 360.0)) {
+      set_boundary(segments, i, start);
+      changed = true;
+    }
+  }
+  ImGui::TableNextColumn();
+  ImGui::SetNextItemWidth(-FLT_MIN);
+  if (i == last) {
+    ImGui::TextDisabled("%.2f", segments[i].end / kDegree);
+  } else {
+    double end = segments[i].end;
+    if (drag_angle("##end", end, 0.0, 360.0)) {
+      set_boundary(segments, i + 1, end);
+      changed = true;
+    }
+  }
+  ImGui::TableNextColumn();
+  ImGui::SetNextItemWidth(-FLT_MIN);
+  if (segments[i].kind == SegmentKind::Dwell)
+    ImGui::TextDisabled("—");
+  else
+    changed |= drag_number("##lift", segments[i].lift, 0.05, 0.0, 1e4, "%.3f");
+  ImGui::PopID();
+  return changed;
+}
+
+bool SegmentTable::draw_buttons(std::vector<SegmentSpec>& segments) {
+  bool changed = false;
+  if (ImGui::Button("Add dwell")) {
+    selected_ = insert_dwell_after(segments, selected_);
+    changed = true;
+  }
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Split the selected segment: a new dwell takes its second half");
+  ImGui::SameLine();
+  ImGui::BeginDisabled(segments.size() < 2);
+  if (ImGui::Button("Delete")) {
+    delete_segment(segments, selected_);
+    selected_ = std::max(0, selected_ - 1);
+    changed = true;
+  }
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::BeginDisabled(selected_ == 0);
+  if (ImGui::ArrowButton("up", ImGuiDir_Up)) {
+    selected_ = move_segment(segments, selected_, -1);
+    changed = true;
+  }
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::BeginDisabled(selected_ + 1 >= static_cast<int>(segments.size()));
+  if (ImGui::ArrowButton("down", ImGuiDir_Down)) {
+    selected_ = move_segment(segments, selected_, +1);
+    changed = true;
+  }
+  ImGui::EndDisabled();
+  help_marker(
+      "Segments cover 0°–360° in order. Editing an end angle moves the boundary it shares with the "
+      "next segment; you can also drag the dashed boundaries in the motion plots. Rises and "
+      "returns "
+      "must cancel over the revolution.");
+  return changed;
+}
+
+bool SegmentTable::draw_details(SegmentSpec& s) {
+  bool changed = false;
+  ImGui::Text("Segment %d", selected_ + 1);
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(-FLT_MIN);
+  changed |= ImGui::InputTextWithHint("##name", "name (optional)", &s.name);
+  if (s.kind == SegmentKind::Dwell ||
+      (s.law != MotionLaw::Polynomial && s.law != MotionLaw::BSpline)) {
+    ImGui::TextDisabled("Endpoint constraints apply to polynomial and B-spline laws.");
+    return changed;
+  }
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8);
+  changed |= input_int("constrained derivatives", s.constrained_order, 0, 3);
+  help_marker(
+      "Displacement is always met at both ends; derivatives 1..N (velocity, acceleration, jerk) "
+      "are "
+      "prescribed. 2 with zero values is Bae 2002, eq. (5.1).");
+  if (s.constrained_order > 0 && ImGui::BeginTable("ends", 2, ImGuiTableFlags_SizingStretchSame)) {
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted("at start");
+    changed |= endpoint_inputs("start", s.at_start, s.constrained_order);
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted("at end");
+    changed |= endpoint_inputs("end", s.at_end, s.constrained_order);
+    ImGui::EndTable();
+  }
+  if (s.law == MotionLaw::BSpline) {
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8);
+    changed |= input_int("B-spline degree", s.bspline.degree, 1, 9);
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8);
+    changed |= input_int("control values", s.bspline.control_values, 2, 64);
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8);
+    changed |= input_int("minimised derivative", s.bspline.minimised_derivative, 1, 9);
+  }
+  return changed;
+}
+
+}  // namespace polarform::studio

@@ -1,0 +1,237 @@
+#include "ui/studio/study_workspace.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <sstream>
+
+#include "ui/studio/colors.h"
+#include "ui/studio/guarded.h"
+#include "ui/studio/splitter.h"
+#include "ui/studio/widgets.h"
+
+namespace polarform::studio {
+namespace {
+
+struct StudyColumns {  // ascending tolerance, as the plots need
+  std::vector<double> tolerance, quartic, rqb, cubic, quartic_arcs, rqb_arcs;
+};
+
+StudyColumns columns(const StudyJobResult& r) {
+  std::vector<StudyRow> rows = r.rows;
+  std::sort(rows.begin(), rows.end(),
+            [](const StudyRow& a, const StudyRow& b) { return a.tolerance < b.tolerance; });
+  StudyColumns c;
+  for (const StudyRow& row : rows) {
+    c.tolerance.push_back(row.tolerance);
+    c.quartic.push_back(row.quartic.control_points);
+    c.rqb.push_back(row.rqb.control_points);
+    c.cubic.push_back(row.cubic.control_points);
+    c.quartic_arcs.push_back(row.quartic.arcs);
+    c.rqb_arcs.push_back(row.rqb.arcs);
+  }
+  return c;
+}
+
+}  // namespace
+
+StudyWorkspace::StudyWorkspace(StudioContext& context, const CamWorkspace& cam)
+    : Workspace(context), cam_(cam) {}
+
+void StudyWorkspace::start() {
+  if (!cam_.has_document()) return;
+  input_ = cam_.current();
+  error_.clear();
+  const std::vector<double> tolerances =
+      log_tolerances(settings_.loosest, settings_.tightest, settings_.per_decade);
+  task_.start([project = *input_, tolerances](TaskControl& control) {
+    return run_study_job(project, tolerances, [&control](double f) { control.report(f); });
+  });
+}
+
+void StudyWorkspace::update() {
+  if (auto outcome = task_.poll()) {
+    if (outcome->value) {
+      result_ = std::move(*outcome->value);
+      result_input_ = input_;
+      log().info("Study: " + std::to_string(result_->rows.size()) + " tolerances in " +
+                 std::to_string(outcome->seconds).substr(0, 4) + " s");
+    } else if (outcome->error) {
+      error_ = failure_text("Study", outcome->error);
+      log().error(error_);
+    } else {
+      log().info("Study cancelled");
+    }
+  }
+}
+
+void StudyWorkspace::draw() {
+  if (!cam_.has_document()) {
+    ImGui::TextDisabled(
+        "Open or create a cam design in the Cam workspace; the study sweeps its conversion.");
+    return;
+  }
+  if (!requested_) {
+    requested_ = true;
+    start();
+  }
+  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  float& left_fraction = layout("study.left", 0.3f);
+  const float left = split_size(left_fraction, avail.x, ImGui::GetFontSize() * 14);
+  ImGui::BeginChild("study controls", ImVec2(left, avail.y), true);
+  draw_controls();
+  draw_table();
+  ImGui::EndChild();
+  ImGui::SameLine(0, 0);
+  vertical_splitter("study split", left_fraction, avail.x);
+  ImGui::SameLine(0, 0);
+  ImGui::BeginChild("study plots", ImVec2(0, avail.y), false,
+                    ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+  draw_plots(ImGui::GetContentRegionAvail());
+  ImGui::EndChild();
+}
+
+void StudyWorkspace::draw_controls() {
+  section("Tolerance sweep");
+  ImGui::TextWrapped("Design: %s", cam_.document_name().c_str());
+  ImGui::PushItemWidth(ImGui::GetFontSize() * 9);
+  log_slider("loosest [mm]", settings_.loosest, 1e-6, 1e-1, "%.2g");
+  log_slider("tightest [mm]", settings_.tightest, 1e-8, 1e-2, "%.2g");
+  input_int("steps per decade", settings_.per_decade, 1, 10);
+  ImGui::PopItemWidth();
+  if (settings_.tightest >= settings_.loosest) {
+    ImGui::PushStyleColor(ImGuiCol_Text, color::error);
+    ImGui::TextWrapped("The tightest tolerance must be below the loosest.");
+    ImGui::PopStyleColor();
+  }
+  ImGui::BeginDisabled(settings_.tightest >= settings_.loosest);
+  if (ImGui::Button(task_.busy() ? "Restart" : "Run study")) start();
+  ImGui::EndDisabled();
+  if (task_.busy()) {
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) task_.cancel();
+    ImGui::ProgressBar(static_cast<float>(task_.progress()), ImVec2(-FLT_MIN, 0));
+  }
+  if (result_ && result_input_ && !(*result_input_ == cam_.current()))
+    ImGui::TextDisabled("The design changed since this study: run it again.");
+  if (!error_.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, color::error);
+    ImGui::TextWrapped("%s", error_.c_str());
+    ImGui::PopStyleColor();
+  }
+}
+
+void StudyWorkspace::draw_table() {
+  if (!result_) return;
+  section("Arcs / control points (measured max error)");
+  const ImGuiTableFlags flags =
+      ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp;
+  if (!ImGui::BeginTable("study rows", 4, flags)) return;
+  ImGui::TableSetupColumn("ε [mm]");
+  ImGui::TableSetupColumn("quartic");
+  ImGui::TableSetupColumn("RQB");
+  ImGui::TableSetupColumn("cubic");
+  ImGui::TableHeadersRow();
+  for (const StudyRow& row : result_->rows) {
+    ImGui::TableNextColumn();
+    ImGui::Text("%.0e", row.tolerance);
+    for (const StudyMethodResult* m : {&row.quartic, &row.rqb, &row.cubic}) {
+      ImGui::TableNextColumn();
+      ImGui::Text("%d / %d", m == &row.cubic ? m->points : m->arcs, m->control_points);
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("degree %d, measured max radial error %.3g mm", m->degree,
+                          m->max_radial_error);
+    }
+  }
+  ImGui::EndTable();
+  ImGui::TextDisabled("cubic: points interpolated / control points");
+  ImGui::TextDisabled("computed in %.2f s", result_->seconds);
+}
+
+void StudyWorkspace::draw_plots(ImVec2 size) {
+  if (!result_) {
+    ImGui::TextDisabled(task_.busy() ? "Running the study…" : "No study yet.");
+    return;
+  }
+  const StudyColumns c = columns(*result_);
+  std::vector<double> angle, rqb, minimax, printed;
+  for (const DeviationRow& d : result_->deviation) {
+    angle.push_back(d.arc_angle / kDegree);
+    rqb.push_back(d.rqb);
+    minimax.push_back(d.quartic_minimax);
+    printed.push_back(d.quartic_printed);
+  }
+  const float height = size.y / 3 - ImGui::GetStyle().ItemSpacing.y;
+  PlotSpec points;
+  points.id = "study control points";
+  points.title = "control points of the NURBS profile";
+  points.x_label = "tolerance ε [mm]";
+  points.y_label = "control points";
+  points.log_x = points.log_y = true;
+  points.lines.push_back(
+      {"quasi-uniform quartic base", c.tolerance, c.quartic, palette_color(0), 2.0f});
+  points.lines.push_back({"RQB base", c.tolerance, c.rqb, palette_color(1), 2.0f});
+  points.lines.push_back(
+      {"cubic through sampled points", c.tolerance, c.cubic, color::muted, 2.0f});
+  for (std::size_t i = 0; i < c.tolerance.size(); ++i)
+    for (const auto* y : {&c.quartic, &c.rqb, &c.cubic})
+      points.points.push_back({c.tolerance[i], (*y)[i], "", 0, true});
+  draw_plot(points, x_views_[0], y_views_[0], ImVec2(size.x, height));
+
+  PlotSpec arcs;
+  arcs.id = "study arcs";
+  arcs.title = "base-circle arcs";
+  arcs.x_label = "tolerance ε [mm]";
+  arcs.y_label = "arcs";
+  arcs.log_x = arcs.log_y = true;
+  arcs.lines.push_back(
+      {"quasi-uniform quartic", c.tolerance, c.quartic_arcs, palette_color(0), 2.0f});
+  arcs.lines.push_back({"RQB", c.tolerance, c.rqb_arcs, palette_color(1), 2.0f});
+  draw_plot(arcs, x_views_[1], y_views_[1], ImVec2(size.x, height));
+
+  PlotSpec deviation;
+  deviation.id = "study deviation";
+  deviation.title = "max angle deviation of one base arc (Bae 2002, Fig. 5.4)";
+  deviation.x_label = "arc angle 2φ [°]";
+  deviation.y_label = "max |ξ(η) − 2φη| [rad]";
+  deviation.log_x = deviation.log_y = true;
+  deviation.lines.push_back({"RQB arc", angle, rqb, palette_color(1), 2.0f});
+  deviation.lines.push_back({"quartic, minimax α", angle, minimax, palette_color(0), 2.0f});
+  deviation.lines.push_back({"quartic, printed α", angle, printed, palette_color(4), 1.0f});
+  draw_plot(deviation, x_views_[2], y_views_[2], ImVec2(size.x, height));
+}
+
+std::optional<ExportRequest> StudyWorkspace::draw_export_menu() {
+  if (ImGui::MenuItem("Study files (CSV, SVG, report.json) into a folder…", nullptr, false,
+                      result_.has_value()))
+    return ExportRequest{"study", "Export the study into a folder", "",
+                         cam_.document_name() + "-study"};
+  return std::nullopt;
+}
+
+void StudyWorkspace::export_to(const ExportRequest&, const std::filesystem::path& folder) {
+  if (!result_) return;
+  guarded(log(), "Export the study", [&] {
+    const auto files = write_study_outputs(*result_, cam_.document_name(), folder);
+    log().info("Wrote " + std::to_string(files.size()) + " study files to " + folder.string());
+  });
+}
+
+std::string StudyWorkspace::numbers() const {
+  std::ostringstream out;
+  out.precision(10);
+  out << "studied=" << (result_ ? 1 : 0) << "\n";
+  if (!result_) return out.str();
+  out << "tolerances=" << result_->rows.size() << "\n";
+  const StudyRow& tightest =
+      *std::min_element(result_->rows.begin(), result_->rows.end(),
+                        [](const auto& a, const auto& b) { return a.tolerance < b.tolerance; });
+  out << "tightest_tolerance_mm=" << tightest.tolerance << "\n";
+  out << "tightest_quartic_control_points=" << tightest.quartic.control_points << "\n";
+  out << "tightest_rqb_control_points=" << tightest.rqb.control_points << "\n";
+  out << "tightest_cubic_control_points=" << tightest.cubic.control_points << "\n";
+  out << "tightest_quartic_error_mm=" << tightest.quartic.max_radial_error << "\n";
+  return out.str();
+}
+
+}  // namespace polarform::studio

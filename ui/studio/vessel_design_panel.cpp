@@ -1,0 +1,130 @@
+#include "ui/studio/vessel_design_panel.h"
+
+#include <imgui.h>
+
+#include <array>
+#include <string_view>
+
+#include "ui/studio/widgets.h"
+
+namespace polarform::studio {
+namespace {
+
+// One optional condition value: a checkbox imposes it.
+bool optional_value(const char* label, std::optional<double>& v, double fallback) {
+  bool on = v.has_value();
+  bool changed = false;
+  ImGui::PushID(label);
+  if (ImGui::Checkbox("##on", &on)) {
+    v = on ? std::optional<double>(v.value_or(fallback)) : std::nullopt;
+    changed = true;
+  }
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!on);
+  double value = v.value_or(fallback);
+  if (drag_number(label, value, 0.01, -1e7, 1e7, "%.5g") && on) {
+    v = value;
+    changed = true;
+  }
+  ImGui::EndDisabled();
+  ImGui::PopID();
+  return changed;
+}
+
+}  // namespace
+
+bool VesselDesignPanel::draw(VesselProject& p) {
+  bool changed = false;
+  VesselDesign& d = p.design;
+  ImGui::PushItemWidth(ImGui::GetFontSize() * 9);
+  section("Vessel");
+  changed |= drag_number("cylinder radius [mm]", d.radius, 1.0, 0.0, 1e6, "%.3f");
+  changed |= drag_number("cylinder length [mm]", d.length, 1.0, 0.0, 1e7, "%.3f");
+  changed |= drag_number("wall thickness [mm]", d.thickness, 0.05, 0.0, 1e5, "%.3f");
+  changed |= drag_number("pressure [MPa]", d.pressure, 0.01, 0.0, 1e4, "%.3f");
+  section("Head preset");
+  changed |= draw_preset(d);
+  section("End conditions");
+  changed |= draw_end("junction A (θ = 0°)", d.end_a, d.radius);
+  changed |= draw_end("junction B (θ = 180°)", d.end_b, d.radius);
+  section("Synthesis");
+  changed |= draw_synthesis(d.synthesis);
+  section("Conversion");
+  changed |= log_slider("tolerance [mm]", p.tolerance, 1e-6, 1.0, "%.2g");
+  ImGui::PopItemWidth();
+  return changed;
+}
+
+bool VesselDesignPanel::draw_preset(VesselDesign& d) {
+  bool changed = false;
+  static constexpr std::array<std::string_view, 4> kNames = {"none", "hemispherical", "ellipsoidal",
+                                                             "torispherical"};
+  int kind = d.preset ? static_cast<int>(d.preset->kind) + 1 : 0;
+  if (combo("preset", kind, kNames)) {
+    if (kind == 0) {
+      d.preset.reset();
+    } else {
+      HeadPreset preset = kind == 3 ? torispherical_100_6(d.radius) : HeadPreset{};
+      preset.kind = static_cast<HeadKind>(kind - 1);
+      d.preset = preset;
+    }
+    changed = true;
+  }
+  if (!d.preset) return changed;
+  HeadPreset& h = *d.preset;
+  if (h.kind == HeadKind::ellipsoidal)
+    changed |= drag_number("radius / depth", h.ratio, 0.01, 0.05, 100.0, "%.3f");
+  if (h.kind == HeadKind::torispherical) {
+    changed |= drag_number("crown radius [mm]", h.crown, 1.0, 0.0, 1e7, "%.3f");
+    changed |= drag_number("knuckle radius [mm]", h.knuckle, 0.5, 0.0, 1e7, "%.3f");
+    if (ImGui::Button("100 %/6 %")) {
+      h = torispherical_100_6(d.radius);
+      changed = true;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("80 %/10 %")) {
+      h = torispherical_80_10(d.radius);
+      changed = true;
+    }
+  }
+  changed |= input_int("sampled targets", d.preset_targets, 1, 2000);
+  help_marker(
+      "Without curvature targets the synthesis fits this many samples of the preset's curvature; "
+      "with targets the preset is only compared.");
+  return changed;
+}
+
+bool VesselDesignPanel::draw_end(const char* title, std::optional<EndCondition>& end,
+                                 double radius) {
+  bool changed = false;
+  ImGui::PushID(title);
+  bool custom = end.has_value();
+  if (ImGui::Checkbox(title, &custom)) {
+    end = custom ? std::optional<EndCondition>(EndCondition::thesis_default(radius)) : std::nullopt;
+    changed = true;
+  }
+  if (!custom) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("default: R = radius, R' = R'' = 0");
+  } else {
+    ImGui::Indent();
+    changed |= optional_value("R [mm]", end->r, radius);
+    changed |= optional_value("R' [mm/rad]", end->dr, 0.0);
+    changed |= optional_value("R'' [mm/rad²]", end->ddr, 0.0);
+    ImGui::Unindent();
+  }
+  ImGui::PopID();
+  return changed;
+}
+
+bool VesselDesignPanel::draw_synthesis(SynthesisSettings& s) {
+  bool changed = false;
+  changed |= input_int("degree", s.degree, 3, 9);
+  changed |= input_int("ordinates", s.ordinates, 4, 200);
+  changed |= log_slider("smoothing λ", s.smoothing, 1e-12, 1e2, "%.2g");
+  changed |= ImGui::Checkbox("symmetric about 90°", &s.symmetric);
+  changed |= input_int("max iterations", s.max_iterations, 10, 100000);
+  return changed;
+}
+
+}  // namespace polarform::studio

@@ -1,0 +1,71 @@
+// The vessel workspace: edit a pressure-vessel design (settings, preset, curvature targets, end
+// conditions), see the NLopt synthesis re-solve in the background after every edit with its
+// residuals, the meridian, curvature and stress plots, and the revolved NURBS vessel in 3D; save
+// the project and export the surfaces.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "export/project/vessel_project.h"
+#include "ui/studio/background_task.h"
+#include "ui/studio/curvature_table.h"
+#include "ui/studio/project_document.h"
+#include "ui/studio/scene_view.h"
+#include "ui/studio/vessel_design_panel.h"
+#include "ui/studio/vessel_plots.h"
+#include "ui/studio/vessel_results.h"
+#include "ui/studio/workspace.h"
+
+namespace polarform::studio {
+
+class VesselWorkspace : public Workspace {
+ public:
+  explicit VesselWorkspace(StudioContext& context);
+
+  WorkspaceKind kind() const override { return WorkspaceKind::vessel; }
+  void update() override;
+  bool busy() const override { return task_.busy(); }
+  void draw() override;
+
+  bool accepts(const std::filesystem::path& file) const override;
+  bool open(const std::filesystem::path& file, bool as_template) override;
+  std::string template_folder() const override { return "vessels"; }
+  bool can_save() const override { return has_document_; }
+  bool save(const std::filesystem::path& file) override;
+  std::filesystem::path document_path() const override { return document_.path(); }
+  std::string document_name() const override { return document_.name(); }
+  bool dirty() const override { return document_.dirty(); }
+  bool can_undo() const override { return document_.can_undo(); }
+  bool can_redo() const override { return document_.can_redo(); }
+  void undo() override { document_.undo(); }
+  void redo() override { document_.redo(); }
+
+  std::optional<ExportRequest> draw_export_menu() override;
+  void export_to(const ExportRequest& request, const std::filesystem::path& file) override;
+
+  void bench_step(int frame, int frames) override;
+  std::string numbers() const override;
+
+ private:
+  void draw_editor();
+  void draw_summary();
+  void draw_views();
+  void rebuild_scene();
+
+  ProjectDocument<VesselProject> document_;
+  BackgroundTask<VesselResults> task_;
+  std::optional<VesselProject> requested_;  // the input of the running or last solve
+  std::optional<VesselResults> results_;    // the last successful solve
+  std::string error_;                       // why the latest input could not be solved
+  double solve_seconds_ = 0.0;
+  double bench_pressure_ = 0.0;
+  VesselDesignPanel design_panel_;
+  CurvatureTable curvature_table_;
+  VesselPlots plots_;
+  SceneView scene_;
+  bool scene_dirty_ = false;
+  bool has_document_ = false;
+};
+
+}  // namespace polarform::studio
