@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "designers/cam/message_text.h"
+#include "src/message_text.h"
 #include "ui/studio/colors.h"
 #include "ui/studio/polyline_simplify.h"
 #include "ui/studio/widgets.h"

@@ -4,7 +4,7 @@
 #include <numbers>
 #include <string>
 
-#include "designers/cam/message_text.h"
+#include "src/message_text.h"
 #include "ui/studio/colors.h"
 #include "ui/studio/segment_edits.h"
 #include "ui/studio/widgets.h"
