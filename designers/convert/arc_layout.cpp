@@ -8,6 +8,13 @@
 
 namespace polarform {
 
+namespace {
+
+// An arc may give up this share of its length to end on a knot of F.
+constexpr double kSnapShare = 0.6;
+
+}  // namespace
+
 double max_arc_sweep(ArcKind kind) {
   return kind == ArcKind::quartic ? std::numbers::pi : 2 * std::numbers::pi / 3;
 }
@@ -35,6 +42,9 @@ std::vector<double> layout_arcs(const BSplineFunction& F, const std::vector<doub
   stops.push_back(F.back());
 
   const double max_sweep = max_arc_sweep(options.kind);
+  std::vector<double> knots;  // F's distinct interior knots
+  for (const Breakpoint& k : breakpoints(F.knots()))
+    if (k.value > F.front() && k.value < F.back()) knots.push_back(k.value);
   auto fits = [&](double a, double b) {
     return arc_synchronization_error(F, a, b, options.kind, options.alpha) <= options.tolerance;
   };
@@ -56,6 +66,12 @@ std::vector<double> layout_arcs(const BSplineFunction& F, const std::vector<doub
       }
       // Avoid a sliver at the end of a stretch: share the last two arcs evenly.
       if (b < end && end - b < 0.25 * (b - a)) b = 0.5 * (a + end);
+      // End the arc on F's last interior knot in its final stretch when there is one: at an arc
+      // junction the product is only C¹ anyway, so that knot then adds no control points.
+      if (b < end) {
+        const auto after = std::upper_bound(knots.begin(), knots.end(), b);
+        if (after != knots.begin() && *(after - 1) > a + kSnapShare * (b - a)) b = *(after - 1);
+      }
       breaks.push_back(b);
       a = b;
     }

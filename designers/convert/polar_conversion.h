@@ -17,7 +17,7 @@ struct ConversionOptions {
   ArcKind base = ArcKind::quartic;
   AlphaRule alpha = AlphaRule::minimax;
   // Share of the tolerance for representing R as a B-spline (the rest is the arcs' budget).
-  double function_share = 0.7;
+  double function_share = 0.9;
 
   bool operator==(const ConversionOptions&) const = default;
 };
