@@ -11,5 +11,8 @@ void register_commands(CLI::App& app);
 // One per cmd_*.cpp.
 void add_cam_command(CLI::App& app);
 void add_study_command(CLI::App& app);
+void add_fit_command(CLI::App& app);
+void add_viz_command(CLI::App& app);
+void add_scan_cam_command(CLI::App& app);
 
 }  // namespace polarform::cli
