@@ -27,5 +27,8 @@ auto for_design(const std::string& design, Job&& job) {
 void add_cam_command(CLI::App& app);
 void add_study_command(CLI::App& app);
 void add_vessel_command(CLI::App& app);
+void add_fit_command(CLI::App& app);
+void add_viz_command(CLI::App& app);
+void add_scan_cam_command(CLI::App& app);
 
 }  // namespace polarform::cli

@@ -1,0 +1,33 @@
+// A scanned cam against its nominal design, both in the nominal's cam frame after phase
+// alignment: the deviation of the fitted profile from the nominal contour at the nominal's contact
+// point C(θ) for every cam angle θ, radial (R_fit − |C| along the ray, as the converter measures)
+// and normal (signed closest-point distance, + where the part has more material), the radial
+// deviation of every scanned point, and the differences of the recovered s, v, a, j from the
+// nominal program's.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "designers/scan/scanned_cam.h"
+#include "src/fit/error_stats.h"
+
+namespace polarform {
+
+struct NominalComparison {
+  std::vector<double> theta;           // cam angles, rad (uniform grid over a revolution)
+  std::vector<double> radial, normal;  // profile deviation at C(θ), mm
+  ErrorStats radial_stats, normal_stats;
+  Eigen::VectorXd point_radial;  // per contour point of the scan: |q| − R_nom(ψ_q), mm
+  ErrorStats point_stats;
+  // Recovered minus nominal s, s', s'', s''' on the grid (mm/rad^k), and their statistics.
+  std::array<std::vector<double>, 4> svaj_difference;
+  std::array<ErrorStats, 4> svaj_stats;
+  std::array<std::vector<double>, 4> nominal_svaj;  // the nominal's s, s', s'', s''' on the grid
+};
+
+// samples >= 16 cam angles.
+NominalComparison compare_to_nominal(const ScannedCam& scan, const PlateCam& nominal,
+                                     int samples = 3600);
+
+}  // namespace polarform

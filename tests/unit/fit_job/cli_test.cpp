@@ -1,0 +1,105 @@
+// The polarform binary on the fit-family commands: exit code 0 and the outputs on the bundled
+// examples, exit code 2 with one error line naming the line on a broken scan, and no files then.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "tests/unit/fit_job/job_test_support.h"
+
+namespace polarform {
+namespace {
+
+using test::example;
+using test::files_in;
+using test::read_json;
+using test::scratch_dir;
+using test::write_text;
+
+struct Outcome {
+  int code;
+  std::string err;
+};
+
+// Runs polarform with `args` (shell words), stderr captured into a file of the scratch dir.
+Outcome polarform(const std::string& args, const std::filesystem::path& dir) {
+  const auto err = dir / "stderr.txt";
+  const std::string cmd = std::string(POLARFORM_BINARY_DIR) + "/ui/cli/polarform " + args +
+                          " >/dev/null 2>" + err.string();
+  const int status = std::system(cmd.c_str());
+  std::ifstream in(err);
+  std::stringstream text;
+  text << in.rdbuf();
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
+}
+
+TEST(Cli, FitVizAndScanCamSucceedOnTheExamples) {
+  const auto dir = scratch_dir();
+  EXPECT_EQ(polarform("fit " + example("scans/vase.xyz") + " --out " + (dir / "vase").string() +
+                          " --ctrl 14,14 --quiet",
+                      dir)
+                .code,
+            0);
+  const nlohmann::json fit = read_json(dir / "vase/report.json");
+  EXPECT_EQ(fit["method"], "cylindrical");
+  EXPECT_EQ(fit["control_net"]["F"], nlohmann::json::array({14, 14}));
+  EXPECT_EQ(polarform("viz " + example("scans/sphere_grid.csv") + " --out " +
+                          (dir / "viz").string() + " -q",
+                      dir)
+                .code,
+            0);
+  EXPECT_TRUE(std::filesystem::exists(dir / "viz/surface.x3d"));
+  EXPECT_EQ(polarform("scan-cam " + example("scans/cam_profile.xyz") + " --nominal " +
+                          example("cams/roller.xml") + " --tol 0.01 --out " +
+                          (dir / "cam").string() + " -q",
+                      dir)
+                .code,
+            0);
+  EXPECT_NEAR(read_json(dir / "cam/report.json")["alignment"]["phase_deg"].get<double>(), 30.0,
+              0.01);
+}
+
+TEST(Cli, BrokenScanExitsTwoNamingTheLineAndWritesNothing) {
+  const auto dir = scratch_dir();
+  const auto scan = write_text(dir / "bad.xyz", "x y z\n1 2 3\n4 5 6\n7 8 abc\n1 1 1\n");
+  for (const std::string command : {"fit", "scan-cam"}) {
+    const Outcome r =
+        polarform(command + " " + scan.string() + " --out " + (dir / command).string(), dir);
+    EXPECT_EQ(r.code, 2) << command;
+    EXPECT_NE(r.err.find("bad.xyz: line 4"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / command)) << command;
+  }
+  const Outcome grid =
+      polarform("viz " + write_text(dir / "g.csv", "p,phi_deg,theta_deg\n1,2\n").string() +
+                    " --out " + (dir / "viz").string(),
+                dir);
+  EXPECT_EQ(grid.code, 2);
+  EXPECT_NE(grid.err.find("g.csv:2:"), std::string::npos) << grid.err;
+}
+
+TEST(Cli, BadOptionsExitTwo) {
+  const auto dir = scratch_dir();
+  const std::string scan = example("scans/vase.xyz");
+  EXPECT_EQ(polarform("fit " + scan + " --out " + (dir / "a").string() + " --degree 3,x", dir).code,
+            2);
+  EXPECT_EQ(
+      polarform("fit " + scan + " --out " + (dir / "b").string() + " --ctrl 8 --tol 0.1", dir).code,
+      2);
+  EXPECT_EQ(
+      polarform("fit " + scan + " --out " + (dir / "c").string() + " --method conical", dir).code,
+      2);
+  const Outcome r = polarform(
+      "scan-cam " + example("scans/cam_profile.xyz") + " --tol 0.01 --out " + (dir / "d").string(),
+      dir);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--nominal"), std::string::npos) << r.err;
+  EXPECT_EQ(files_in(dir), std::set<std::string>{"stderr.txt"});
+}
+
+}  // namespace
+}  // namespace polarform

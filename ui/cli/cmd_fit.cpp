@@ -1,0 +1,134 @@
+// `polarform fit`: fit a scanned point cloud with a polar NURBS curve (a planar profile) or a
+// spherical / cylindrical NURBS surface (Bae 2002, ch. 2-4) and write the geometry, a deviation
+// cloud, a preview plot and a report.
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <iostream>
+#include <optional>
+
+#include "src/error.h"
+#include "ui/cli/commands.h"
+#include "ui/cli/progress_bar.h"
+#include "ui/jobs/fit_arguments.h"
+#include "ui/jobs/fit_outputs.h"
+
+namespace polarform::cli {
+
+namespace {
+
+struct FitArgs {
+  std::string scan, out;
+  std::string method = "auto", closed = "auto", pole, degree, ctrl, tol, tol_measure = "max",
+              center, axis;
+  std::string threads = "2";
+  bool skip_bad = false, quiet = false;
+};
+
+// "X,Y,Z", or "X,Y" (Z = 0) where `planar_ok`.
+Eigen::Vector3d vector3(const std::string& option, const std::string& text, bool planar_ok) {
+  const std::vector<double> v = parse_numbers(option, text, planar_ok ? 2 : 3, 3);
+  return {v[0], v[1], v.size() == 3 ? v[2] : 0.0};
+}
+
+FitJobOptions job_options(const FitArgs& a) {
+  FitJobOptions o;
+  constexpr FitJobMethod methods[] = {FitJobMethod::automatic, FitJobMethod::polar,
+                                      FitJobMethod::spherical, FitJobMethod::cylindrical};
+  constexpr Closure closures[] = {Closure::automatic, Closure::closed, Closure::open};
+  constexpr PoleTreatment poles[] = {PoleTreatment::none, PoleTreatment::g1, PoleTreatment::cap};
+  constexpr ToleranceMeasure measures[] = {ToleranceMeasure::max, ToleranceMeasure::p99,
+                                           ToleranceMeasure::p95, ToleranceMeasure::rms};
+  o.method =
+      methods[parse_choice("--method", a.method, {"auto", "polar", "spherical", "cylindrical"})];
+  o.closure = closures[parse_choice("--closed", a.closed, {"auto", "yes", "no"})];
+  if (!a.pole.empty()) o.pole = poles[parse_choice("--pole", a.pole, {"none", "g1", "cap"})];
+  if (!a.degree.empty()) o.degree = parse_int_pair("--degree", a.degree, 1, 9);
+  if (!a.ctrl.empty()) o.ctrl = parse_int_pair("--ctrl", a.ctrl, 2, 2000);
+  if (!a.tol.empty()) {
+    o.tolerance = parse_numbers("--tol", a.tol, 1, 1)[0];
+    if (!(*o.tolerance > 0))
+      throw InputError("--tol '" + a.tol + "': expected a positive number of mm");
+    o.measure =
+        measures[parse_choice("--tol-measure", a.tol_measure, {"max", "p99", "p95", "rms"})];
+  }
+  if (!a.center.empty()) o.center = vector3("--center", a.center, true);
+  if (!a.axis.empty()) o.axis = vector3("--axis", a.axis, false);
+  o.threads = parse_int_pair("--threads", a.threads, 1, 256).first;
+  o.skip_bad = a.skip_bad;
+  return o;
+}
+
+void run(const FitArgs& a) {
+  FitJobOptions o = job_options(a);
+  ProgressBar reading("reading ", !a.quiet), fitting("fitting ", !a.quiet);
+  o.read_progress = [&reading](double f) {
+    reading(f);
+    if (f >= 1.0) reading.finish();
+  };
+  o.fit_progress = std::ref(fitting);
+  const FitJobResult r = run_fit_job(a.scan, o);
+  fitting.finish();
+  const std::vector<std::string> files = write_fit_outputs(r, a.out);
+  if (r.dropped > 0)
+    std::cerr << "polarform: warning: " << r.dropped << " bad records skipped in " << a.scan
+              << "\n";
+  if (a.quiet) return;
+  const FitReport& rep = r.report();
+  std::printf("%s fit: %s\n", r.method.c_str(), r.reason.c_str());
+  if (r.polar)
+    std::printf("F degree %d, %d control values; NURBS curve degree %d, %d control points\n",
+                rep.degree_v, rep.size_v, r.curve->degree(), r.curve->size());
+  else
+    std::printf(
+        "F degree (%d, %d), %d x %d control values; NURBS surface degree (%d, %d), %d x %d control "
+        "points\n",
+        rep.degree_u, rep.degree_v, rep.size_u, rep.size_v, rep.nurbs_degree_u, rep.nurbs_degree_v,
+        rep.nurbs_size_u, rep.nurbs_size_v);
+  std::printf(
+      "distance to the fit over %zu points: rms %.4g mm, p95 %.4g mm, p99 %.4g mm, max %.4g mm\n",
+      rep.error.count, rep.error.rms, rep.error.p95, rep.error.p99, rep.error.max);
+  std::printf("wrote %zu files to %s (%.0f ms)\n", files.size(),
+              std::filesystem::absolute(a.out).string().c_str(), r.seconds * 1e3);
+}
+
+}  // namespace
+
+void add_fit_command(CLI::App& app) {
+  auto args = std::make_shared<FitArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "fit",
+      "Fit a scanned point cloud (xyz/csv, PLY, STL, OBJ, OFF) with an exact NURBS: a polar curve "
+      "for a\n"
+      "planar profile, or a spherical / cylindrical surface. Writes surface.igs/.stp/.x3d "
+      "(curve.igs/\n"
+      ".stp/.x3d/.dxf for a profile), deviation.ply (points coloured by signed distance),\n"
+      "preview.svg, report.json and report.html.");
+  cmd->add_option("scan", args->scan, "point-cloud file")->required();
+  cmd->add_option("--out", args->out, "output directory (created if missing)")->required();
+  cmd->add_option("--method", args->method,
+                  "auto|polar|spherical|cylindrical (auto: a planar cloud is a profile, else the "
+                  "best-fit quadric decides)");
+  cmd->add_option("--closed", args->closed, "auto|yes|no: close the fit around the axis");
+  cmd->add_option(
+      "--pole", args->pole,
+      "none|g1|cap: both poles of a spherical fit (default: G0 where the data reaches a pole)");
+  cmd->add_option("--degree", args->degree,
+                  "p[,q]: degrees of F along u (φ or z) and v (θ); a curve uses the last");
+  cmd->add_option("--ctrl", args->ctrl, "n[,m]: control values of F along u and v (default 12)");
+  cmd->add_option("--tol", args->tol,
+                  "mm: refine F until the distance measure meets this (instead of --ctrl)");
+  cmd->add_option("--tol-measure", args->tol_measure,
+                  "max|p99|p95|rms: the statistic --tol bounds (default max)");
+  cmd->add_option("--center", args->center,
+                  "X,Y[,Z]: origin of the fit's frame in mm (profiles: the polar centre)");
+  cmd->add_option("--axis", args->axis,
+                  "X,Y,Z: axis k of the fit's frame (profiles: the plane normal)");
+  cmd->add_option("--threads", args->threads, "worker threads (default 2)");
+  cmd->add_flag("--skip-bad", args->skip_bad,
+                "skip unparsable or non-finite records instead of stopping");
+  cmd->add_flag("--quiet,-q", args->quiet, "no progress bars and no summary");
+  cmd->callback([args] { run(*args); });
+}
+
+}  // namespace polarform::cli
