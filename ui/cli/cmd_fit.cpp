@@ -19,8 +19,8 @@ namespace {
 
 struct FitArgs {
   std::string scan, out;
-  std::string method = "auto", closed = "auto", pole, degree, ctrl, tol, tol_measure = "max",
-              center, axis;
+  // Empty: not given (the project's value, or the default).
+  std::string method, closed, pole, degree, ctrl, tol, tol_measure, center, axis;
   std::string threads = "2";
   bool skip_bad = false, quiet = false;
 };
@@ -31,48 +31,67 @@ Eigen::Vector3d vector3(const std::string& option, const std::string& text, bool
   return {v[0], v[1], v.size() == 3 ? v[2] : 0.0};
 }
 
-FitJobOptions job_options(const FitArgs& a) {
-  FitJobOptions o;
+// The options given on the command line, over `o` (a project's or the defaults).
+FitJobOptions job_options(const FitArgs& a, FitJobOptions o) {
   constexpr FitJobMethod methods[] = {FitJobMethod::automatic, FitJobMethod::polar,
                                       FitJobMethod::spherical, FitJobMethod::cylindrical};
   constexpr Closure closures[] = {Closure::automatic, Closure::closed, Closure::open};
   constexpr PoleTreatment poles[] = {PoleTreatment::none, PoleTreatment::g1, PoleTreatment::cap};
   constexpr ToleranceMeasure measures[] = {ToleranceMeasure::max, ToleranceMeasure::p99,
                                            ToleranceMeasure::p95, ToleranceMeasure::rms};
-  o.method =
-      methods[parse_choice("--method", a.method, {"auto", "polar", "spherical", "cylindrical"})];
-  o.closure = closures[parse_choice("--closed", a.closed, {"auto", "yes", "no"})];
+  if (!a.method.empty())
+    o.method =
+        methods[parse_choice("--method", a.method, {"auto", "polar", "spherical", "cylindrical"})];
+  if (!a.closed.empty())
+    o.closure = closures[parse_choice("--closed", a.closed, {"auto", "yes", "no"})];
   if (!a.pole.empty()) o.pole = poles[parse_choice("--pole", a.pole, {"none", "g1", "cap"})];
   if (!a.degree.empty()) o.degree = parse_int_pair("--degree", a.degree, 1, 9);
-  if (!a.ctrl.empty()) o.ctrl = parse_int_pair("--ctrl", a.ctrl, 2, 2000);
+  if (!a.ctrl.empty() && !a.tol.empty())
+    throw InputError("--ctrl and --tol: give one (a fixed control net or a tolerance to refine to)");
+  if (!a.ctrl.empty()) {
+    o.ctrl = parse_int_pair("--ctrl", a.ctrl, 2, 2000);
+    o.tolerance.reset();
+  }
   if (!a.tol.empty()) {
     o.tolerance = parse_numbers("--tol", a.tol, 1, 1)[0];
     if (!(*o.tolerance > 0))
       throw InputError("--tol '" + a.tol + "': expected a positive number of mm");
+    o.ctrl.reset();
+  }
+  if (!a.tol_measure.empty())
     o.measure =
         measures[parse_choice("--tol-measure", a.tol_measure, {"max", "p99", "p95", "rms"})];
-  }
   if (!a.center.empty()) o.center = vector3("--center", a.center, true);
   if (!a.axis.empty()) o.axis = vector3("--axis", a.axis, false);
   o.threads = parse_int_pair("--threads", a.threads, 1, 256).first;
-  o.skip_bad = a.skip_bad;
+  o.skip_bad = o.skip_bad || a.skip_bad;
   return o;
 }
 
 void run(const FitArgs& a) {
-  FitJobOptions o = job_options(a);
+  // A project file (.xml) names the scan and its options; flags given here override them.
+  std::filesystem::path scan = a.scan;
+  FitJobOptions defaults;
+  if (std::filesystem::path(a.scan).extension() == ".xml") {
+    std::vector<std::string> warnings;
+    const FitProject project = read_fit_project(a.scan, warnings);
+    for (const std::string& w : warnings) std::cerr << "polarform: warning: " << w << "\n";
+    scan = scan_path(project, a.scan);
+    defaults = fit_job_options(project);
+  }
+  FitJobOptions o = job_options(a, defaults);
   ProgressBar reading("reading ", !a.quiet), fitting("fitting ", !a.quiet);
   o.read_progress = [&reading](double f) {
     reading(f);
     if (f >= 1.0) reading.finish();
   };
   o.fit_progress = std::ref(fitting);
-  const FitJobResult r = run_fit_job(a.scan, o);
+  const FitJobResult r = run_fit_job(scan, o);
   fitting.finish();
   const std::vector<std::string> files = write_fit_outputs(r, a.out);
   if (r.dropped > 0)
-    std::cerr << "polarform: warning: " << r.dropped << " bad records skipped in " << a.scan
-              << "\n";
+    std::cerr << "polarform: warning: " << r.dropped << " bad records skipped in "
+              << scan.string() << "\n";
   if (a.quiet) return;
   const FitReport& rep = r.report();
   std::printf("%s fit: %s\n", r.method.c_str(), r.reason.c_str());
@@ -104,12 +123,14 @@ void add_fit_command(CLI::App& app) {
       "(curve.igs/\n"
       ".stp/.x3d/.dxf for a profile), deviation.ply (points coloured by signed distance),\n"
       "preview.svg, report.json and report.html.");
-  cmd->add_option("scan", args->scan, "point-cloud file")->required();
+  cmd->add_option("scan", args->scan,
+                  "point-cloud file, or a fit project (.xml, see docs/file-formats.md) naming one")
+      ->required();
   cmd->add_option("--out", args->out, "output directory (created if missing)")->required();
   cmd->add_option("--method", args->method,
-                  "auto|polar|spherical|cylindrical (auto: a planar cloud is a profile, else the "
-                  "best-fit quadric decides)");
-  cmd->add_option("--closed", args->closed, "auto|yes|no: close the fit around the axis");
+                  "auto|polar|spherical|cylindrical (default auto: a planar cloud is a profile, "
+                  "else the best-fit quadric decides)");
+  cmd->add_option("--closed", args->closed, "auto|yes|no: close the fit around the axis (default auto)");
   cmd->add_option(
       "--pole", args->pole,
       "none|g1|cap: both poles of a spherical fit (default: G0 where the data reaches a pole)");

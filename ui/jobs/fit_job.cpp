@@ -107,6 +107,21 @@ FitJobResult run(Eigen::Matrix3Xd points, const std::string& name, const FitJobO
 
 }  // namespace
 
+FitJobOptions fit_job_options(const FitProject& p) {
+  FitJobOptions o;
+  o.method = p.method;
+  o.closure = p.closure;
+  o.pole = p.pole;
+  o.degree = p.degree;
+  o.ctrl = p.ctrl;
+  o.tolerance = p.tolerance;
+  o.measure = p.measure;
+  o.center = p.center;
+  o.axis = p.axis;
+  o.skip_bad = p.skip_bad;
+  return o;
+}
+
 FitJobResult run_fit_job(const std::filesystem::path& scan, const FitJobOptions& o) {
   StageClock clock;
   ReadOptions ro;

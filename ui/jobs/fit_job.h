@@ -11,12 +11,11 @@
 #include <utility>
 
 #include "designers/scan/cloud_plane.h"
+#include "export/project/fit_project.h"
 #include "src/fit/polar_curve_fit.h"
 #include "src/fit/rotational_fit.h"
 
 namespace polarform {
-
-enum class FitJobMethod { automatic, polar, spherical, cylindrical };
 
 struct FitJobOptions {
   FitJobMethod method = FitJobMethod::automatic;
@@ -48,6 +47,9 @@ struct FitJobResult {
 
   const FitReport& report() const { return polar ? polar->report : surface->report(); }
 };
+
+// The options a fit project asks for (progress callbacks and threads left at their defaults).
+FitJobOptions fit_job_options(const FitProject& project);
 
 // Throws InputError (unreadable or bad file, bad options, data the method cannot fit) or
 // NumericalError (a tolerance that cannot be met) with a message naming the cause.

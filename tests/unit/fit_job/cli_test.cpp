@@ -64,6 +64,35 @@ TEST(Cli, FitVizAndScanCamSucceedOnTheExamples) {
               0.01);
 }
 
+// A fit project names the scan (relative to itself) and the options; flags override them.
+TEST(Cli, FitRunsAProjectAndFlagsOverrideIt) {
+  const auto dir = scratch_dir();
+  ASSERT_EQ(polarform("fit " + example("scans/sphere_like_fit.xml") + " --out " +
+                          (dir / "project").string() + " -q",
+                      dir)
+                .code,
+            0);
+  const nlohmann::json fit = read_json(dir / "project/report.json");
+  EXPECT_EQ(fit["method"], "spherical");
+  EXPECT_EQ(fit["control_net"]["F"], nlohmann::json::array({12, 24}));
+  ASSERT_EQ(polarform("fit " + example("scans/sphere_like_fit.xml") + " --ctrl 10,16 --out " +
+                          (dir / "override").string() + " -q",
+                      dir)
+                .code,
+            0);
+  EXPECT_EQ(read_json(dir / "override/report.json")["control_net"]["F"],
+            nlohmann::json::array({10, 16}));
+
+  write_text(dir / "bad.xml", "<polarform version=\"1\">\n<fit scan=\"a.xyz\" degree=\"3\"/>\n"
+                              "</polarform>\n");
+  const Outcome bad = polarform("fit " + (dir / "bad.xml").string() + " --out " +
+                                    (dir / "bad").string(),
+                                dir);
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("bad.xml:2: <fit> attribute 'degree'"), std::string::npos) << bad.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "bad"));
+}
+
 TEST(Cli, BrokenScanExitsTwoNamingTheLineAndWritesNothing) {
   const auto dir = scratch_dir();
   const auto scan = write_text(dir / "bad.xyz", "x y z\n1 2 3\n4 5 6\n7 8 abc\n1 1 1\n");

@@ -1,6 +1,6 @@
 // Bounded mutation fuzzing of every parser polarform owns: point clouds (xyz/csv, PLY ascii and
-// binary in both byte orders, STL ascii and binary, OBJ, OFF) and the cam and vessel project
-// files. Each valid seed is mutated (byte flips, deletions, duplications, insertions of
+// binary in both byte orders, STL ascii and binary, OBJ, OFF) and the cam, vessel and fit
+// project files. Each valid seed is mutated (byte flips, deletions, duplications, insertions of
 // number-breaking tokens, truncation) with a fixed seed; every mutant must either parse into a
 // valid result or throw InputError — no other exception, no crash (run `make asan` for memory
 // errors). POLARFORM_FUZZ_ITERATIONS scales the run (default 10000 mutants per seed).
@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "export/project/cam_project.h"
+#include "export/project/fit_project.h"
 #include "export/project/vessel_project.h"
 #include "src/error.h"
 #include "src/io/point_cloud.h"
@@ -203,6 +204,15 @@ TEST(ParserFuzz, VesselProjectReaderAcceptsOrRejectsCleanly) {
          },
          rng_seed++, iterations());
   }
+}
+
+TEST(ParserFuzz, FitProjectReaderAcceptsOrRejectsCleanly) {
+  fuzz(read_text("examples/scans/sphere_like_fit.xml"),
+       [](const std::string& text) {
+         std::vector<std::string> warnings;
+         parse_fit_project(text, "fuzz.xml", warnings);
+       },
+       300, iterations());
 }
 
 }  // namespace

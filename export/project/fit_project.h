@@ -1,0 +1,58 @@
+// The fit project file: a scan and how to fit it, as XML, so a fit can be repeated, shared and
+// opened in the studio. Lengths in mm; the scan path is relative to the project file's folder
+// (or absolute). Reading names file:line:attribute for every bad value and warns about unknown
+// fields; writing is atomic, and a saved project loads back exactly.
+#pragma once
+
+#include <Eigen/Core>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "src/fit/function_fit.h"
+#include "src/fit/orthogonal_coordinates.h"
+#include "src/fit/spherical_fit.h"
+
+namespace polarform {
+
+// The fit job's method. auto: a planar cloud is a profile (polar curve), else the best-fit
+// quadric decides between spherical and cylindrical.
+enum class FitJobMethod { automatic, polar, spherical, cylindrical };
+
+struct FitProject {
+  std::filesystem::path scan;  // as written in the file
+  FitJobMethod method = FitJobMethod::automatic;
+  Closure closure = Closure::automatic;
+  std::optional<PoleTreatment> pole;          // both poles of a spherical fit; else automatic
+  std::optional<std::pair<int, int>> degree;  // of F: (u ↔ φ or z, v ↔ θ)
+  std::optional<std::pair<int, int>> ctrl;    // F's control net
+  std::optional<double> tolerance;            // mm, instead of ctrl: refine until met
+  ToleranceMeasure measure = ToleranceMeasure::max;
+  std::optional<Eigen::Vector3d> center;  // frame origin / polar centre, mm
+  std::optional<Eigen::Vector3d> axis;    // frame axis k / a profile's plane normal
+  bool skip_bad = false;
+
+  bool operator==(const FitProject&) const = default;
+};
+
+// The scan's path: `project.scan` taken relative to the folder of `project_file`.
+std::filesystem::path scan_path(const FitProject& project,
+                                const std::filesystem::path& project_file);
+
+// Reads <polarform version="1"><fit …/></polarform>, or a bare <fit> root:
+//   <fit scan="cloud.ply" method="auto|polar|spherical|cylindrical" closed="auto|yes|no"
+//        pole="none|g1|cap" degree="3,3" ctrl="12,12" tolerance="mm"
+//        tolerance-measure="max|p99|p95|rms" center="x,y,z" axis="x,y,z" skip-bad="false"/>
+// Throws InputError "file:line: <fit> attribute 'x': expected …" for bad values; appends a warning
+// for every unknown attribute or element.
+FitProject read_fit_project(const std::filesystem::path& file, std::vector<std::string>& warnings);
+FitProject parse_fit_project(const std::string& text, const std::string& file,
+                             std::vector<std::string>& warnings);
+
+// The project as XML (numbers in their shortest exact form) and saved atomically.
+std::string fit_project_xml(const FitProject& project);
+void write_fit_project(const FitProject& project, const std::filesystem::path& file);
+
+}  // namespace polarform
