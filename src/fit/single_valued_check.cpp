@@ -73,16 +73,58 @@ void detrend(const int* idx, int m, const Eigen::VectorXd& s, const Eigen::Vecto
   for (int a = 0; a < m; ++a) res[a] = r[idx[a]] - row(a).dot(c);
 }
 
+// The points' deviations within their own branch: split the cell at the largest gap of the
+// sorted residuals (enough points on both sides, as in branches()) and detrend each side by
+// itself, so that two branches everywhere (a concentric bore) do not inflate the noise to their
+// distance — nor, through a common trend that jumps with the branches' mix along s, to a
+// fraction of it.
+template <int Terms>
+void within_branch_deviations(const int* idx, int m, const double* res, const Eigen::VectorXd& s,
+                              const Eigen::VectorXd& t, const Eigen::VectorXd& r, double sc,
+                              double tc, double hs, double ht, double* out) {
+  const int need = std::max(3, m / 10);
+  std::vector<int> order(m);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return res[a] < res[b]; });
+  int cut = m - 1;  // last position (in order) of the lower side
+  double best = -1.0;
+  for (int a = need - 1; a + need < m; ++a)
+    if (res[order[a + 1]] - res[order[a]] > best) best = res[order[a + 1]] - res[order[a]], cut = a;
+  std::vector<int> side_idx;
+  std::vector<double> side_res;
+  const auto side = [&](int from, int to) {  // positions order[from, to]
+    side_idx.clear();
+    for (int a = from; a <= to; ++a) side_idx.push_back(idx[order[a]]);
+    side_res.resize(side_idx.size());
+    const int k = static_cast<int>(side_idx.size());
+    if (k >= 2 * Terms) {
+      detrend<Terms>(side_idx.data(), k, s, t, r, sc, tc, hs, ht, side_res.data());
+    } else {
+      const double median = res[order[(from + to) / 2]];
+      for (int a = from; a <= to; ++a) side_res[a - from] = res[order[a]] - median;
+    }
+    for (int a = from; a <= to; ++a) out[order[a]] = std::abs(side_res[a - from]);
+  };
+  side(0, cut);
+  if (cut + 1 < m) side(cut + 1, m - 1);
+  // Keep the split only where the gap stands far out of the spread it leaves (two branches);
+  // one cluster split at its largest gap would understate its own noise.
+  std::vector<double> spread(out, out + m);
+  std::nth_element(spread.begin(), spread.begin() + m / 2, spread.end());
+  if (!(best > 8 * 1.4826 * spread[m / 2]))
+    for (int a = 0; a < m; ++a) out[a] = std::abs(res[a]);
+}
+
 struct CellFold {
   bool fold = false;
   double separation = 0.0;
 };
 
 // Two branches: the largest gap in the sorted residuals (enough points on both sides) exceeds the
-// threshold and the smaller group is interleaved with the larger one, i.e. at least 40% of its
-// points have their nearest neighbour in the cell (in normalised s, t) in the other group. A
-// steep or narrow single-valued feature also splits the residuals, but into groups that occupy
-// separate parts of the cell.
+// threshold and the smaller group is interleaved with the larger one: along s for curves (a runs
+// count), for surfaces at least 40% of its points have their nearest neighbour in the cell (in
+// normalised s, t) in the other group. A steep or narrow single-valued feature also splits the
+// residuals, but into groups that occupy separate parts of the cell.
 CellFold branches(const int* idx, int m, const double* res, const Eigen::VectorXd& s,
                   const Eigen::VectorXd& t, const Eigen::VectorXd& r, bool surface, double hs,
                   double ht, double threshold) {
@@ -106,7 +148,7 @@ CellFold branches(const int* idx, int m, const double* res, const Eigen::VectorX
     return Eigen::Vector2d(s[k] / hs, surface ? t[k] / ht : 0.0);
   };
   int members = 0, crossing = 0;
-  for (int a = 0; a < m; ++a) {
+  for (int a = 0; surface && a < m; ++a) {
     if (upper[a] != minority) continue;
     ++members;
     double nearest = std::numeric_limits<double>::infinity();
@@ -118,7 +160,19 @@ CellFold branches(const int* idx, int m, const double* res, const Eigen::VectorX
     }
     crossing += other;
   }
-  f.fold = crossing >= 0.4 * members;
+  if (surface) {
+    f.fold = crossing >= 0.4 * members;
+  } else {
+    // Curves: count the changes of branch along s (Wald–Wolfowitz runs). Interleaved branches of
+    // m1 and m2 points change about 2·m1·m2/m times; a steep single-valued feature at most twice.
+    std::vector<int> by_s(m);
+    std::iota(by_s.begin(), by_s.end(), 0);
+    std::sort(by_s.begin(), by_s.end(), [&](int a, int b) { return s[idx[a]] < s[idx[b]]; });
+    int changes = 0;
+    for (int a = 1; a < m; ++a) changes += upper[by_s[a]] != upper[by_s[a - 1]];
+    const double m1 = cut + 1, m2 = m - cut - 1;
+    f.fold = changes >= std::max(4.0, m1 * m2 / m);
+  }
   // The branches' distance: difference of their median radii.
   std::vector<double> lo, hi;
   for (int a = 0; a < m; ++a) (upper[a] ? hi : lo).push_back(r[idx[a]]);
@@ -166,13 +220,21 @@ SingleValuedness check_single_valued(const Eigen::VectorXd& s, const Eigen::Vect
       else detrend<3>(id, size(c), s, t, r, sc, tc, g.hs, g.ht, rs);
     }
   });
-  // Robust noise: 1.4826 · median |residual| over the detrended points.
+  // Robust noise: 1.4826 · median deviation of the detrended points within their branch.
   std::vector<double> all;
   all.reserve(n);
   for (int c = 0; c < cells; ++c)
-    if (size(c) >= min_points)
-      for (int a = start[static_cast<std::size_t>(c)]; a < start[static_cast<std::size_t>(c) + 1]; ++a)
-        all.push_back(std::abs(res[static_cast<std::size_t>(a)]));
+    if (size(c) >= min_points) {
+      const std::size_t from = static_cast<std::size_t>(start[static_cast<std::size_t>(c)]);
+      all.resize(all.size() + static_cast<std::size_t>(size(c)));
+      const double sc = g.s0 + (c / g.nt + 0.5) * g.hs, tc = g.t0 + (c % g.nt + 0.5) * g.ht;
+      const int* id = idx.data() + from;
+      double* dev = all.data() + all.size() - size(c);
+      if (surface)
+        within_branch_deviations<6>(id, size(c), res.data() + from, s, t, r, sc, tc, g.hs, g.ht, dev);
+      else
+        within_branch_deviations<3>(id, size(c), res.data() + from, s, t, r, sc, tc, g.hs, g.ht, dev);
+    }
   if (all.empty()) return out;
   std::nth_element(all.begin(), all.begin() + all.size() / 2, all.end());
   out.noise = 1.4826 * all[all.size() / 2];

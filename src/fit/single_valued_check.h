@@ -23,7 +23,7 @@ struct FoldRegion {
 
 struct SingleValuedness {
   bool single_valued = true;
-  double noise = 0.0;      // robust σ of the detrended radii
+  double noise = 0.0;      // robust σ of the detrended radii within their branch
   double threshold = 0.0;  // branch separation counted as a fold
   std::vector<FoldRegion> folds;
 };

@@ -144,6 +144,32 @@ TEST(PolarCurveFit, RefusesDataThatRaysCrossTwice) {
   EXPECT_TRUE(check_single_valued(pb.theta, Eigen::VectorXd(), pb.r).single_valued);
 }
 
+// A ring with a concentric bore: two branches over the whole circle. The noise must come from
+// within each branch, not from the distance between them.
+TEST(PolarCurveFit, ConcentricBranchesEverywhereAreAFold) {
+  const double sigma = 0.01;
+  const Eigen::Matrix2Xd outer = polar_points([](double) { return 40.0; }, 3000, 0.0, 2 * kPi, {0, 0}, sigma, 11);
+  const Eigen::Matrix2Xd bore = polar_points([](double) { return 4.0; }, 3000, 0.0, 2 * kPi, {0, 0}, sigma, 12);
+  Eigen::Matrix2Xd all(2, outer.cols() + bore.cols());
+  all << outer, bore;
+  const PolarCoordinates pc = polar_coordinates(all);
+  const SingleValuedness c = check_single_valued(pc.theta, Eigen::VectorXd(), pc.r);
+  EXPECT_FALSE(c.single_valued);
+  EXPECT_NEAR(c.noise, sigma, 0.3 * sigma);
+  ASSERT_EQ(c.folds.size(), 1u);
+  EXPECT_NEAR(c.folds[0].separation, 36.0, 0.05);
+  EXPECT_LT(c.folds[0].s0, 0.05);
+  EXPECT_GT(c.folds[0].s1, 2 * kPi - 0.05);
+  PolarFitOptions o;
+  o.centre = Eigen::Vector2d::Zero();
+  EXPECT_THROW(fit_polar_curve(all, o), InputError);
+  // Either branch alone is single-valued, and its noise estimate is the true σ.
+  const PolarCoordinates po = polar_coordinates(outer);
+  const SingleValuedness one = check_single_valued(po.theta, Eigen::VectorXd(), po.r);
+  EXPECT_TRUE(one.single_valued);
+  EXPECT_NEAR(one.noise, sigma, 0.3 * sigma);
+}
+
 TEST(PolarCurveFit, SliceOfACylinderIsACircleInSpace) {
   Eigen::Matrix3Xd p = test::cylindrical_cloud([](double, double) { return 6.0; }, 20000, -5, 5, 0, 2 * kPi, 8);
   const test::Rigid m = test::random_rigid(9);
