@@ -55,7 +55,7 @@ App::App(StudioOptions options)
     : options_(std::move(options)),
       persist_(!options_.headless()),
       state_file_(config_directory() / "state.ini"),
-      state_(persist_ ? load_state(state_file_) : PersistentState{}),
+      state_(persist_ ? load_state(state_file_, log_) : PersistentState{}),
       context_{log_, state_.layout, examples_directory()} {
   if (persist_) {
     std::error_code ec;

@@ -56,8 +56,8 @@ class App {
   StudioOptions options_;
   bool persist_;
   std::filesystem::path state_file_;
+  MessageLog log_;  // before state_: loading the state may warn
   PersistentState state_;
-  MessageLog log_;
   StudioContext context_;
   std::unique_ptr<PlatformWindow> window_;
   std::vector<std::unique_ptr<Workspace>> workspaces_;

@@ -147,7 +147,7 @@ void CamWorkspace::draw_banner() {
 void CamWorkspace::draw_editor() {
   CamProject& edit = document_.edit();
   if (ImGui::CollapsingHeader("Segments", ImGuiTreeNodeFlags_DefaultOpen))
-    segment_table_.draw(edit.cam.segments);
+    segment_table_.draw(edit.cam.segments, log());
   if (ImGui::CollapsingHeader("Follower and cam", ImGuiTreeNodeFlags_DefaultOpen)) {
     settings_panel_.draw(edit.cam, view_, log());
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 9);

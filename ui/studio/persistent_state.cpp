@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
+#include <iomanip>
+#include <limits>
 #include <sstream>
 
 #include "export/atomic_file.h"
@@ -30,6 +32,51 @@ std::optional<float> to_float(const std::string& text) {
   return std::nullopt;
 }
 
+// Applies one "key=value" line; false when the key is unknown or the value unreadable.
+bool apply_line(PersistentState& state, const std::string& line) {
+  const auto eq = line.find('=');
+  if (eq == std::string::npos) return false;
+  const std::string key = line.substr(0, eq), value = line.substr(eq + 1);
+  if (key == "last_project") {
+    state.last_project = value;
+    return true;
+  }
+  if (key == "workspace") {
+    const auto kind = parse_workspace(value);
+    if (kind) state.workspace = *kind;
+    return kind.has_value();
+  }
+  if (key == "recent") {
+    if (value.empty()) return false;
+    if (state.recent.size() < PersistentState::kMaxRecent) state.recent.emplace_back(value);
+    return true;
+  }
+  if (key.starts_with("window.")) {
+    const auto v = to_int(value);
+    if (!v) return false;
+    WindowPlacement& w = state.window;
+    if (key == "window.x")
+      w.x = *v;
+    else if (key == "window.y")
+      w.y = *v;
+    else if (key == "window.width" && *v >= 320)
+      w.width = *v;
+    else if (key == "window.height" && *v >= 240)
+      w.height = *v;
+    else if (key == "window.maximized")
+      w.maximized = *v != 0;
+    else
+      return false;
+    return true;
+  }
+  if (key.starts_with("layout.") && key.size() > 7) {
+    const auto v = to_float(value);
+    if (v) state.layout[key.substr(7)] = *v;
+    return v.has_value();
+  }
+  return false;
+}
+
 }  // namespace
 
 void PersistentState::remember(const std::filesystem::path& file, WorkspaceKind kind) {
@@ -51,38 +98,35 @@ std::filesystem::path config_directory() {
   return std::filesystem::current_path() / ".polarform-studio";
 }
 
-PersistentState load_state(const std::filesystem::path& file) {
+PersistentState load_state(const std::filesystem::path& file, MessageLog& log) {
   PersistentState state;
-  std::ifstream in(file);
-  std::string line;
-  while (std::getline(in, line)) {
-    const auto eq = line.find('=');
-    if (eq == std::string::npos) continue;
-    const std::string key = line.substr(0, eq), value = line.substr(eq + 1);
-    if (key == "last_project") {
-      state.last_project = value;
-    } else if (key == "workspace") {
-      if (auto kind = parse_workspace(value)) state.workspace = *kind;
-    } else if (key == "recent") {
-      if (state.recent.size() < PersistentState::kMaxRecent && !value.empty())
-        state.recent.emplace_back(value);
-    } else if (key.starts_with("window.")) {
-      const auto v = to_int(value);
-      if (!v) continue;
-      if (key == "window.x") state.window.x = *v;
-      if (key == "window.y") state.window.y = *v;
-      if (key == "window.width" && *v >= 320) state.window.width = *v;
-      if (key == "window.height" && *v >= 240) state.window.height = *v;
-      if (key == "window.maximized") state.window.maximized = *v != 0;
-    } else if (key.starts_with("layout.")) {
-      if (const auto v = to_float(value)) state.layout[key.substr(7)] = *v;
-    }
+  std::error_code ec;
+  if (!std::filesystem::exists(file, ec)) return state;
+  std::ifstream in;
+  if (std::filesystem::is_regular_file(file, ec)) in.open(file);
+  if (!in.is_open()) {
+    log.warning(file.string() + ": cannot be read; the app starts with its default state");
+    return state;
   }
+  std::string line, first_ignored;
+  int number = 0, ignored = 0;
+  while (std::getline(in, line)) {
+    ++number;
+    if (line.ends_with('\r')) line.pop_back();  // edited on Windows
+    if (line.empty() || line.starts_with('#')) continue;
+    if (apply_line(state, line)) continue;
+    if (ignored++ == 0) first_ignored = "line " + std::to_string(number) + " '" + line + "'";
+  }
+  if (ignored > 0)
+    log.warning(file.string() + ": ignored " + std::to_string(ignored) + " unreadable line" +
+                (ignored == 1 ? "" : "s") + " (first: " + first_ignored.substr(0, 120) +
+                "); their settings keep the defaults");
   return state;
 }
 
 void save_state(const PersistentState& state, const std::filesystem::path& file) {
   std::ostringstream out;
+  out << std::setprecision(std::numeric_limits<float>::max_digits10);  // floats round-trip
   out << "# polarform-studio state, rewritten on exit\n";
   out << "last_project=" << state.last_project.string() << "\n";
   out << "workspace=" << workspace_name(state.workspace) << "\n";

@@ -1,7 +1,8 @@
 // What the app remembers between runs: the last project and workspace, the recent files, the
 // window's placement and the layout (splitter fractions, view toggles). Stored as "key=value"
 // lines in $XDG_CONFIG_HOME/polarform-studio/state.ini (~/.config when unset), next to ImGui's own
-// imgui.ini. Unreadable or unknown lines are ignored: a damaged file never stops the app.
+// imgui.ini. Unreadable or unknown lines are ignored with a warning in the log: a damaged file
+// never stops the app.
 #pragma once
 
 #include <filesystem>
@@ -10,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "ui/studio/message_log.h"
 #include "ui/studio/workspace_kind.h"
 
 namespace polarform::studio {
@@ -36,8 +38,9 @@ struct PersistentState {
 // The directory holding state.ini and imgui.ini.
 std::filesystem::path config_directory();
 
-// Defaults when the file is missing or unreadable.
-PersistentState load_state(const std::filesystem::path& file);
+// Defaults when the file is missing; defaults for whatever a damaged file does not say, with one
+// warning naming the file, the number of ignored lines and the first of them.
+PersistentState load_state(const std::filesystem::path& file, MessageLog& log);
 // Written atomically; throws std::exception on an I/O failure.
 void save_state(const PersistentState& state, const std::filesystem::path& file);
 

@@ -36,6 +36,10 @@ PlatformWindow::PlatformWindow(const WindowConfig& config) : imgui_ini_(config.i
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
   glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
   glfwWindowHint(GLFW_MAXIMIZED, config.placement.maximized ? GLFW_TRUE : GLFW_FALSE);
+  // ImGui draws without depth or stencil and the 3D views render into their own framebuffers:
+  // the window needs neither, and a software renderer then has no depth buffer to clear.
+  glfwWindowHint(GLFW_DEPTH_BITS, 0);
+  glfwWindowHint(GLFW_STENCIL_BITS, 0);
   window_ = glfwCreateWindow(config.placement.width, config.placement.height, config.title.c_str(),
                              nullptr, nullptr);
   if (!window_) {
@@ -93,7 +97,7 @@ void PlatformWindow::render() {
   glViewport(0, 0, framebuffer_width(), framebuffer_height());
   const ImVec4 bg = ImGui::GetStyle().Colors[ImGuiCol_WindowBg];
   glClearColor(bg.x, bg.y, bg.z, 1.0f);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glClear(GL_COLOR_BUFFER_BIT);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
 

@@ -8,6 +8,7 @@
 #include "export/plot_axis.h"
 #include "export/polyline_path.h"
 #include "ui/studio/colors.h"
+#include "ui/studio/opaque_fill.h"
 #include "ui/studio/polyline_simplify.h"
 
 namespace polarform::studio {
@@ -231,7 +232,7 @@ PlotEvents draw_plot(const PlotSpec& spec, AxisView& x_view, AxisView& y_view, I
   }
 
   // Frame, grid, ticks.
-  dl->AddRectFilled(ImVec2(left, top), ImVec2(right, bottom), color::background);
+  add_opaque_rect(dl, ImVec2(left, top), ImVec2(right, bottom), color::background);
   for (double v : yticks.minor)
     dl->AddLine(ImVec2(left, sy(v)), ImVec2(right, sy(v)), color::minor_grid);
   for (double v : xticks.minor)

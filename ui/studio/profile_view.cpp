@@ -6,6 +6,7 @@
 
 #include "src/message_text.h"
 #include "ui/studio/colors.h"
+#include "ui/studio/opaque_fill.h"
 #include "ui/studio/polyline_simplify.h"
 #include "ui/studio/widgets.h"
 
@@ -18,6 +19,15 @@ constexpr int kLegendSteps = 32;  // shades of the pressure-angle colour
 Eigen::Vector2d rotated(const Eigen::Vector2d& p, double angle) {
   const double c = std::cos(angle), s = std::sin(angle);
   return {c * p.x() - s * p.y(), s * p.x() + c * p.y()};
+}
+
+// The screen points, reduced to where the line bends by more than polyline_simplify's tolerance
+// (a fraction of a pixel): the same picture with fewer triangles.
+std::vector<ImVec2> simplified(const Polyline& points) {
+  std::vector<ImVec2> line;
+  for (const PixelPoint& q : simplify_polyline(points))
+    line.emplace_back(static_cast<float>(q.x), static_cast<float>(q.y));
+  return line;
 }
 
 // Angle `a` shifted by whole turns to lie within π of `near`.
@@ -34,7 +44,7 @@ void ProfileView::draw(const CamResults& r, const NurbsCurve2d* converted, CamVi
   view2d_.handle_input(ImGui::IsItemHovered(), ImGui::IsItemActive());
   const ImVec2 max(min.x + canvas.x, min.y + canvas.y);
   ImDrawList* dl = ImGui::GetWindowDrawList();
-  dl->AddRectFilled(min, max, color::background);
+  add_opaque_rect(dl, min, max, color::background);
   dl->PushClipRect(min, max, true);
   if (r.plate)
     draw_plate(r, converted, view, min, max);
@@ -91,17 +101,19 @@ void ProfileView::draw_plate(const CamResults& r, const NurbsCurve2d* converted,
   };
   const ImVec2 centre = view2d_.to_screen(0, 0);
   const float scale = static_cast<float>(view2d_.pixels_per_unit());
-  if (view.show_base_circle) {
-    dl->AddCircle(centre, static_cast<float>(cam.base_radius()) * scale, color::muted, 180, 1.0f);
+  if (view.show_base_circle) {  // 0 segments: ImGui picks enough for a 0.3 px error
+    dl->AddCircle(centre, static_cast<float>(cam.base_radius()) * scale, color::muted, 0, 1.0f);
     if (roller > 0)
-      dl->AddCircle(centre, static_cast<float>(cam.prime_radius()) * scale, color::grid, 180, 1.0f);
+      dl->AddCircle(centre, static_cast<float>(cam.prime_radius()) * scale, color::grid, 0, 1.0f);
   }
   dl->AddLine(ImVec2(centre.x - 6, centre.y), ImVec2(centre.x + 6, centre.y), color::frame);
   dl->AddLine(ImVec2(centre.x, centre.y - 6), ImVec2(centre.x, centre.y + 6), color::frame);
 
   std::vector<ImVec2> line;
   if (view.show_pitch && roller > 0) {
-    for (const auto& q : p.pitch) line.push_back(screen(q));
+    Polyline pitch;
+    for (const auto& q : p.pitch) pitch.push_back({screen(q).x, screen(q).y});
+    line = simplified(pitch);
     dl->AddPolyline(line.data(), static_cast<int>(line.size()), palette_color(0, 0.55f),
                     ImDrawFlags_Closed, 1.0f);
   }
@@ -133,9 +145,7 @@ void ProfileView::draw_plate(const CamResults& r, const NurbsCurve2d* converted,
       const ImVec2 q = screen(p.contour[i]);
       run.push_back({q.x, q.y});
     }
-    line.clear();
-    for (const PixelPoint& q : simplify_polyline(run))
-      line.emplace_back(static_cast<float>(q.x), static_cast<float>(q.y));
+    line = simplified(run);
     dl->AddPolyline(line.data(), static_cast<int>(line.size()), c, 0, 3.0f);
     begin = end;
   }

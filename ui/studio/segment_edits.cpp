@@ -1,12 +1,36 @@
 #include "ui/studio/segment_edits.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <numbers>
+#include <string>
 #include <utility>
 
+#include "src/error.h"
+
 namespace polarform::studio {
+namespace {
+
+// Throws unless 0 <= i < size: "no segment 7 (the cam has 4)".
+void check_index(const std::vector<SegmentSpec>& segments, int i) {
+  if (i >= 0 && i < static_cast<int>(segments.size())) return;
+  throw InputError("no segment " + std::to_string(i + 1) + " (the cam has " +
+                   std::to_string(segments.size()) + ")");
+}
+
+std::string degrees(double radians) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g°", radians * 180.0 / std::numbers::pi);
+  return buffer;
+}
+
+}  // namespace
 
 double set_boundary(std::vector<SegmentSpec>& segments, int k, double angle) {
-  if (k < 1 || k >= static_cast<int>(segments.size())) return angle;
+  if (k < 1 || k >= static_cast<int>(segments.size()))
+    throw InputError("no boundary " + std::to_string(k) +
+                     " between two segments (the cam has " + std::to_string(segments.size()) +
+                     ")");
   SegmentSpec& before = segments[k - 1];
   SegmentSpec& after = segments[k];
   const double lo = before.start + kMinSegmentWidth, hi = after.end - kMinSegmentWidth;
@@ -18,8 +42,12 @@ double set_boundary(std::vector<SegmentSpec>& segments, int k, double angle) {
 }
 
 int insert_dwell_after(std::vector<SegmentSpec>& segments, int i) {
-  if (i < 0 || i >= static_cast<int>(segments.size())) return i;
+  check_index(segments, i);
   SegmentSpec& s = segments[i];
+  if (s.end - s.start < 2.0 * kMinSegmentWidth)
+    throw InputError("segment " + std::to_string(i + 1) + " is " + degrees(s.end - s.start) +
+                     " wide; splitting it would leave parts narrower than " +
+                     degrees(kMinSegmentWidth));
   const double middle = 0.5 * (s.start + s.end);
   SegmentSpec dwell;
   dwell.kind = SegmentKind::Dwell;
@@ -31,7 +59,8 @@ int insert_dwell_after(std::vector<SegmentSpec>& segments, int i) {
 }
 
 void delete_segment(std::vector<SegmentSpec>& segments, int i) {
-  if (segments.size() < 2 || i < 0 || i >= static_cast<int>(segments.size())) return;
+  check_index(segments, i);
+  if (segments.size() < 2) throw InputError("a cam needs at least one segment");
   if (i > 0)
     segments[i - 1].end = segments[i].end;
   else
@@ -40,10 +69,14 @@ void delete_segment(std::vector<SegmentSpec>& segments, int i) {
 }
 
 int move_segment(std::vector<SegmentSpec>& segments, int i, int direction) {
+  check_index(segments, i);
+  if (direction != 1 && direction != -1)
+    throw InputError("the direction is -1 (earlier) or +1 (later), got " +
+                     std::to_string(direction));
   const int j = i + direction;
-  if (i < 0 || j < 0 || i >= static_cast<int>(segments.size()) ||
-      j >= static_cast<int>(segments.size()))
-    return i;
+  if (j < 0 || j >= static_cast<int>(segments.size()))
+    throw InputError("segment " + std::to_string(i + 1) + " is already " +
+                     (j < 0 ? "first" : "last"));
   const int first = std::min(i, j);
   SegmentSpec& a = segments[first];
   SegmentSpec& b = segments[first + 1];

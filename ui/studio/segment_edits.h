@@ -1,7 +1,9 @@
 // Edits of a cam's segment list that keep it covering [0, 2π] without gaps: moving a boundary,
 // inserting a dwell by halving a segment, deleting a segment (a neighbour takes its span) and
 // swapping neighbours (each keeps its width). The library validates the result; these only keep
-// the angles consistent. Small and generic: a candidate for designers/cam.
+// the angles consistent. An edit that cannot be made (no such segment, the only segment, a split
+// below the minimum width, a move past either end) throws InputError saying why and leaves the
+// segments unchanged. Small and generic: a candidate for designers/cam.
 #pragma once
 
 #include <vector>
@@ -17,6 +19,7 @@ inline constexpr double kMinSegmentWidth = 0.1 * 3.14159265358979323846 / 180.0;
 // at least kMinSegmentWidth. Returns the angle used.
 double set_boundary(std::vector<SegmentSpec>& segments, int k, double angle);
 // Segment i keeps the first half of its span; a new dwell takes the second. Returns its index.
+// Throws when either half would be narrower than kMinSegmentWidth.
 int insert_dwell_after(std::vector<SegmentSpec>& segments, int i);
 // Removes segment i (size > 1); the previous segment (the next, for the first) takes its span.
 void delete_segment(std::vector<SegmentSpec>& segments, int i);

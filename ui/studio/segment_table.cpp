@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "designers/cam/motion_law.h"
+#include "ui/studio/guarded.h"
 #include "ui/studio/segment_edits.h"
 #include "ui/studio/widgets.h"
 
@@ -42,7 +43,7 @@ bool endpoint_inputs(const char* id, EndpointDerivatives& e, int order) {
 
 }  // namespace
 
-bool SegmentTable::draw(std::vector<SegmentSpec>& segments) {
+bool SegmentTable::draw(std::vector<SegmentSpec>& segments, MessageLog& log) {
   bool changed = false;
   if (segments.empty()) {
     ImGui::TextDisabled("No segments.");
@@ -62,7 +63,7 @@ bool SegmentTable::draw(std::vector<SegmentSpec>& segments) {
     for (int i = 0; i < static_cast<int>(segments.size()); ++i) changed |= draw_row(segments, i);
     ImGui::EndTable();
   }
-  changed |= draw_buttons(segments);
+  changed |= draw_buttons(segments, log);
   ImGui::Separator();
   changed |= draw_details(segments[selected_]);
   return changed;
@@ -137,34 +138,35 @@ bool SegmentTable::draw_row(std::vector<SegmentSpec>& segments, int i) {
   return changed;
 }
 
-bool SegmentTable::draw_buttons(std::vector<SegmentSpec>& segments) {
+bool SegmentTable::draw_buttons(std::vector<SegmentSpec>& segments, MessageLog& log) {
   bool changed = false;
   if (ImGui::Button("Add dwell")) {
-    selected_ = insert_dwell_after(segments, selected_);
-    changed = true;
+    changed |= guarded(log, "Add dwell",
+                      [&] { selected_ = insert_dwell_after(segments, selected_); });
   }
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("Split the selected segment: a new dwell takes its second half");
   ImGui::SameLine();
   ImGui::BeginDisabled(segments.size() < 2);
   if (ImGui::Button("Delete")) {
-    delete_segment(segments, selected_);
-    selected_ = std::max(0, selected_ - 1);
-    changed = true;
+    changed |= guarded(log, "Delete segment", [&] {
+      delete_segment(segments, selected_);
+      selected_ = std::max(0, selected_ - 1);
+    });
   }
   ImGui::EndDisabled();
   ImGui::SameLine();
   ImGui::BeginDisabled(selected_ == 0);
   if (ImGui::ArrowButton("up", ImGuiDir_Up)) {
-    selected_ = move_segment(segments, selected_, -1);
-    changed = true;
+    changed |= guarded(log, "Move segment",
+                      [&] { selected_ = move_segment(segments, selected_, -1); });
   }
   ImGui::EndDisabled();
   ImGui::SameLine();
   ImGui::BeginDisabled(selected_ + 1 >= static_cast<int>(segments.size()));
   if (ImGui::ArrowButton("down", ImGuiDir_Down)) {
-    selected_ = move_segment(segments, selected_, +1);
-    changed = true;
+    changed |= guarded(log, "Move segment",
+                      [&] { selected_ = move_segment(segments, selected_, +1); });
   }
   ImGui::EndDisabled();
   help_marker(

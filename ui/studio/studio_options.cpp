@@ -4,6 +4,11 @@
 #include <regex>
 
 namespace polarform::studio {
+namespace {
+
+constexpr int kMaxSize = 16384;  // pixels: the largest framebuffer of llvmpipe and common GPUs
+
+}  // namespace
 
 std::optional<StudioOptions> parse_options(int argc, char** argv, int& exit_code) {
   StudioOptions options;
@@ -43,8 +48,10 @@ std::optional<StudioOptions> parse_options(int argc, char** argv, int& exit_code
     options.width = std::stoi(m[1]);
     options.height = std::stoi(m[2]);
     options.size_given = true;
-    if (options.width < 320 || options.height < 240) {
-      std::cerr << "polarform-studio: --size: at least 320x240, got " << size << "\n";
+    if (options.width < 320 || options.height < 240 || options.width > kMaxSize ||
+        options.height > kMaxSize) {
+      std::cerr << "polarform-studio: --size: from 320x240 to " << kMaxSize << "x" << kMaxSize
+                << ", got " << size << "\n";
       exit_code = 2;
       return std::nullopt;
     }

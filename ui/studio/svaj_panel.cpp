@@ -81,7 +81,9 @@ bool SvajPanel::draw(const CamResults& r, const CamViewSettings& view,
     const PlotEvents events =
         draw_plot(spec, x_view_, y_views_[k], ImVec2(size.x, height), &crosshair_);
     ImGui::PopID();
-    if (events.dragged_marker >= 0) {
+    // The plots may show the last valid design while the edited one has fewer boundaries.
+    if (events.dragged_marker >= 0 &&
+        events.dragged_marker + 1 < static_cast<int>(segments.size())) {
       set_boundary(segments, events.dragged_marker + 1, events.marker_x * kDegree);
       changed = true;
     }
