@@ -25,6 +25,9 @@ struct CamDesign {
   double rpm = 300.0;
   double cylinder_radius = 0.0;  // Rc: pitch cylinder of the track centre (cylindrical cams)
   double z0 = 0.0;               // track height at s = 0 (cylindrical cams)
+  // Radial depth of the groove walls, centred on the pitch cylinder: they span Rc ± depth/2
+  // (cylindrical cams); 0 = no groove surfaces.
+  double groove_depth = 0.0;
   std::vector<SegmentSpec> segments;
 
   bool operator==(const CamDesign&) const = default;

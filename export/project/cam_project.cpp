@@ -10,6 +10,7 @@
 #include "export/xml_escape.h"
 #include "export/xml_reader.h"
 #include "src/error.h"
+#include "src/message_text.h"
 
 namespace polarform {
 
@@ -119,6 +120,13 @@ CamDesign read_cam(const XmlElementReader& r, const std::string& file,
     d.z0 = r.number("z0", 0.0);
     if (d.follower.kind != FollowerKind::Roller)
       r.fail("follower", "a roller follower for a cylindrical cam");
+    d.groove_depth = r.positive("groove-depth", 0.0, true);
+    // The walls' inner radius must keep the contact single-valued (groove_wall.h).
+    const double inner_limit = std::sqrt(2.0) * d.follower.roller_radius;
+    if (d.groove_depth > 0 && !(d.cylinder_radius - d.groove_depth / 2 >= inner_limit))
+      r.fail("groove-depth", "a depth whose inner radius cylinder-radius − depth/2 is at least "
+                             "√2·roller-radius = " + number_text(inner_limit) + " mm (at most " +
+                             number_text(2 * (d.cylinder_radius - inner_limit)) + " mm)");
   }
 
   const std::vector<const XMLElement*> segments = r.children("segment");
@@ -218,6 +226,7 @@ std::string cam_project_xml(const CamProject& p) {
   if (d.type == CamType::Cylindrical) {
     attr("cylinder-radius", number(d.cylinder_radius));
     attr("z0", number(d.z0));
+    if (d.groove_depth > 0) attr("groove-depth", number(d.groove_depth));
   }
   out << ">\n";
   for (const SegmentSpec& s : d.segments) {

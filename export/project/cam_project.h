@@ -33,7 +33,7 @@ struct CamProject {
 //   <polarform version="1">
 //     <cam type="plate|cylindrical" follower="knife-edge|roller|flat-faced" base-radius="mm"
 //          roller-radius="mm" offset="mm" rotation="ccw|cw" rpm="1/min" cylinder-radius="mm"
-//          z0="mm">
+//          z0="mm" groove-depth="mm, walls at cylinder-radius ± depth/2 (cylindrical)">
 //       <segment kind="dwell|rise|return" law="…" lift="mm" from="deg" to="deg" name="…"
 //                degree="5" control-values="10" minimise="1|2|3">   (degree…: law="bspline")
 //         <start v="mm/rad" a="mm/rad²" j="mm/rad³"/>  <end …/>   (law="polynomial|bspline")

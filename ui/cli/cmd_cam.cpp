@@ -60,6 +60,11 @@ void run(const CamArgs& a) {
   if (r.limited)
     std::printf("degree-%d profile: %d control points, measured max radial error %.3g mm\n",
                 r.limited->curve.degree(), r.limited->control_points, r.limited->max_radial_error);
+  for (const GrooveSurface& g : r.groove)
+    std::printf("groove wall %s: degree %d x %d, %d x %d control points, "
+                "measured max error %.3g mm\n",
+                g.side > 0 ? "+z" : "-z", g.surface.degree_u(), g.surface.degree_v(),
+                g.surface.size_u(), g.surface.size_v(), g.max_error);
   std::printf("wrote %zu files to %s (%.0f ms)\n", files.size(),
               std::filesystem::absolute(a.out).string().c_str(), r.seconds * 1e3);
 }

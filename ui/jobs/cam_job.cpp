@@ -77,6 +77,12 @@ CamJobResult run_cam_job(const CamProject& project, const CamJobOptions& options
     }
     r.conversion = convert_polar_function(r.profile_function, project.conversion);
     r.track = track_curve(r.conversion, design.cylinder_radius, r.track_offset);
+    if (design.groove_depth > 0) {
+      const GrooveOptions groove{design.cylinder_radius - design.groove_depth / 2,
+                                 design.cylinder_radius + design.groove_depth / 2,
+                                 project.conversion.tolerance, project.conversion.alpha};
+      for (int side : {-1, 1}) r.groove.push_back(groove_surface(*r.barrel, side, groove));
+    }
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;

@@ -10,6 +10,7 @@
 
 #include "designers/cam/cam_analysis.h"
 #include "designers/cam/continuity.h"
+#include "designers/cam/groove_surface.h"
 #include "designers/convert/degree_limited.h"
 #include "designers/convert/polar_conversion.h"
 #include "export/project/cam_project.h"
@@ -39,6 +40,9 @@ struct CamJobResult {
   NurbsCurve2d profile;            // plate cams: the exact-degree contour
   NurbsCurve3d track;              // cylindrical cams: the track centre line on the cylinder
   double track_offset = 0.0;       // cylindrical: conversion of z + offset (kept positive)
+  // Cylindrical cams with a groove depth: the walls on the −z and +z side of the track, within
+  // the conversion tolerance.
+  std::vector<GrooveSurface> groove;
   std::optional<LimitedCurve> limited;  // plate cams: degree-limited contour
   // Plate cams whose exact degree exceeds the project's max-degree: the profile to export instead.
   std::optional<LimitedCurve> capped;

@@ -105,6 +105,23 @@ std::string html_report(const CamJobResult& r, const CamOutputOptions& o, const 
   html.add_paragraph("Error budget: law → B-spline " +
                      (c.function_exact ? std::string("exact") : format_trimmed(c.function_error * 1e3, 4) + " µm") +
                      ", base-circle synchronization " + format_trimmed(c.synchronization_error * 1e3, 4) + " µm.");
+  if (!r.groove.empty()) {
+    html.add_heading("Groove walls");
+    std::vector<std::vector<std::string>> walls;
+    for (const GrooveSurface& w : r.groove)
+      walls.push_back(
+          {w.side > 0 ? "+z" : "−z",
+           std::to_string(w.surface.degree_u()) + " x " + std::to_string(w.surface.degree_v()),
+           std::to_string(w.surface.size_u()) + " x " + std::to_string(w.surface.size_v()),
+           format_trimmed(w.max_error * 1e3, 4)});
+    html.add_table({"wall", "degrees (u x ρ)", "control net", "measured max error [µm]"}, walls);
+    html.add_paragraph("groove.igs and groove.stp hold both walls as rational tensor-product "
+                       "surfaces (ρ·X, ρ·Y, Z): x, y exact on the cylinders of radius ρ from " +
+                       format_trimmed(r.groove.front().surface.front_v(), 6) + " to " +
+                       format_trimmed(r.groove.front().surface.back_v(), 6) +
+                       " mm, the height Z fitted to the exact roller envelope; the error is the "
+                       "largest height gap at equal polar angle and radius, measured densely.");
+  }
   if (r.limited)
     html.add_paragraph("Degree-" + std::to_string(r.limited->curve.degree()) + " profile (profile_deg3.dxf): " +
                        std::to_string(r.limited->control_points) + " control points, measured max radial error " +
@@ -167,6 +184,27 @@ json cam_report_json(const CamJobResult& r, const std::vector<std::string>& file
   for (const ArcSummary& a : c.arcs)
     j["arc_list"].push_back({{"start_deg", angle_deg(a.start)}, {"sweep_deg", a.sweep * kDeg},
                              {"max_radial_error_mm", a.max_radial_error}});
+  if (!r.groove.empty()) {
+    const GrooveSurface& g = r.groove.front();
+    j["groove"] = {{"depth_mm", r.project.cam.groove_depth},
+                   {"inner_radius_mm", g.surface.front_v()},
+                   {"outer_radius_mm", g.surface.back_v()},
+                   {"tolerance_mm", g.tolerance},
+                   {"walls", json::array()}};
+    for (const GrooveSurface& w : r.groove)
+      j["groove"]["walls"].push_back(
+          {{"side", w.side > 0 ? "+z" : "-z"},
+           {"degree_u", w.surface.degree_u()},
+           {"degree_v", w.surface.degree_v()},
+           {"control_points_u", w.surface.size_u()},
+           {"control_points_v", w.surface.size_v()},
+           {"arcs", w.base.arcs()},
+           {"height_degree_u", w.height.degree_u()},
+           {"height_degree_v", w.height.degree_v()},
+           {"max_error_mm", w.max_error},
+           {"height_fit_error_mm", w.fit_error},
+           {"samples", w.samples}});
+  }
   // Analyses.
   if (r.analysis) {
     const CamAnalysis& a = *r.analysis;
@@ -247,6 +285,20 @@ std::vector<std::string> write_cam_outputs(const CamJobResult& r, const std::fil
     DxfWriter dxf(DxfOptions{std::max(10, r.track.degree()), 1e-6});
     dxf.add(r.track, "TRACK");
     content[stem + ".dxf"] = dxf.str();
+    if (!r.groove.empty()) {
+      IgesWriter groove_igs;
+      StepWriter groove_stp(o.design_name);
+      for (const GrooveSurface& g : r.groove) {
+        groove_igs.add(g.surface, g.side > 0 ? "GROOVE WALL UPPER" : "GROOVE WALL LOWER");
+        groove_stp.add(g.surface, g.side > 0 ? "groove wall +z" : "groove wall -z");
+      }
+      IgesHeader gi = iges;
+      StepHeader gs = step;
+      gi.file_name = "groove.igs";
+      gs.file_name = "groove.stp";
+      content["groove.igs"] = groove_igs.str(gi);
+      content["groove.stp"] = groove_stp.str(gs);
+    }
   }
   iges.file_name = stem + ".igs";
   step.file_name = stem + ".stp";
