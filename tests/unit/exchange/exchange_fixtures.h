@@ -12,16 +12,20 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include "src/nurbs/nurbs_curve.h"
 #include "src/nurbs/nurbs_surface.h"
 
 namespace polarform::exchange_test {
 
 // A fresh directory under the system temporary directory, removed with its files on destruction.
+// Named per process: ctest runs each test of a suite as its own process, in parallel.
 class ScratchDir {
  public:
   explicit ScratchDir(const std::string& name)
-      : dir_(std::filesystem::temp_directory_path() / ("polarform_exchange_" + name)) {
+      : dir_(std::filesystem::temp_directory_path() /
+             ("polarform_exchange_" + name + "_" + std::to_string(::getpid()))) {
     std::filesystem::remove_all(dir_);
     std::filesystem::create_directories(dir_);
   }
