@@ -10,7 +10,9 @@ namespace polarform::studio {
 struct FitSettings {
   int method = 0;  // 0 automatic, 1 spherical, 2 cylindrical
   int degree_u = 3, degree_v = 3;
-  bool use_tolerance = true;
+  // Off by default, as in `polarform fit`: a fixed 12 x 12 net always fits, whereas any default
+  // tolerance is below the noise of some scan.
+  bool use_tolerance = false;
   double tolerance = 0.1;  // mm, on the true distance statistic `measure`
   int measure = 1;         // ToleranceMeasure: scans are noisy, so p99 rather than the max
   int size_u = 12, size_v = 12;

@@ -164,6 +164,30 @@ int nearest_draggable(const PlotSpec& spec, const AxisScale& sx, ImVec2 mouse, f
   return best;
 }
 
+// A legend in the plot's top-right corner when two or more lines carry labels: a swatch of each
+// line's colour and its label, on a light box.
+void draw_legend(ImDrawList* dl, const std::vector<PlotLine>& lines, ImVec2 top_right, float fh) {
+  std::vector<const PlotLine*> labelled;
+  float width = 0.0f;
+  for (const PlotLine& line : lines)
+    if (!line.label.empty()) {
+      labelled.push_back(&line);
+      width = std::max(width, ImGui::CalcTextSize(line.label.c_str()).x);
+    }
+  if (labelled.size() < 2) return;
+  const float swatch = fh * 1.5f, pad = fh * 0.3f;
+  const ImVec2 min(top_right.x - width - swatch - 3 * pad, top_right.y + pad);
+  const ImVec2 max(top_right.x - pad, min.y + labelled.size() * fh + 2 * pad);
+  dl->AddRectFilled(min, max, IM_COL32(255, 255, 255, 215));
+  dl->AddRect(min, max, color::frame);
+  for (std::size_t k = 0; k < labelled.size(); ++k) {
+    const float y = min.y + pad + k * fh;
+    dl->AddLine(ImVec2(min.x + pad, y + fh * 0.5f), ImVec2(min.x + pad + swatch, y + fh * 0.5f),
+                labelled[k]->color, labelled[k]->thickness);
+    dl->AddText(ImVec2(min.x + 2 * pad + swatch, y), color::text, labelled[k]->label.c_str());
+  }
+}
+
 }  // namespace
 
 PlotEvents draw_plot(const PlotSpec& spec, AxisView& x_view, AxisView& y_view, ImVec2 size,
@@ -295,6 +319,7 @@ PlotEvents draw_plot(const PlotSpec& spec, AxisView& x_view, AxisView& y_view, I
   }
   dl->PopClipRect();
   dl->AddRect(ImVec2(left, top), ImVec2(right, bottom), color::frame);
+  draw_legend(dl, spec.lines, ImVec2(right, top), fh);
 
   // Title and axis labels.
   dl->AddText(ImVec2(origin.x, origin.y + fh * 0.15f), color::text, spec.y_label.c_str());
