@@ -44,8 +44,11 @@ WorkspaceKind document_kind(const std::filesystem::path& file) {
     return WorkspaceKind::cam;
   if (names(root, "vessel") || (names(root, "polarform") && root->FirstChildElement("vessel")))
     return WorkspaceKind::vessel;
+  if (names(root, "fit") || (names(root, "polarform") && root->FirstChildElement("fit")))
+    return WorkspaceKind::fit;
   throw InputError(file.string() +
-                   ": neither a cam nor a vessel project (expected a <cam> or <vessel> element)");
+                   ": neither a cam, a vessel nor a fit project (expected a <cam>, <vessel> or "
+                   "<fit> element)");
 }
 
 }  // namespace polarform::studio

@@ -1,4 +1,4 @@
-// Which workspace a file belongs to: project XML names its content (<cam> or <vessel>, bare or
+// Which workspace a file belongs to: project XML names its content (<cam>, <vessel> or <fit>, bare or
 // inside <polarform>); the scan formats of src/io (xyz, csv, txt, ply, stl, obj, off) go to the
 // fit workspace. Used by File ▸ Open, drag-and-drop and --project.
 #pragma once
@@ -11,7 +11,7 @@
 
 namespace polarform::studio {
 
-// Throws InputError for XML that is malformed or holds neither a cam nor a vessel, and for an
+// Throws InputError for XML that is malformed or holds no cam, vessel or fit, and for an
 // extension that no workspace reads.
 WorkspaceKind document_kind(const std::filesystem::path& file);
 

@@ -3,6 +3,10 @@
 // arcs, closure and pole treatment — and their translation into the fitter's RotationalFitOptions.
 #pragma once
 
+#include <string>
+#include <vector>
+
+#include "export/project/fit_project.h"
 #include "src/fit/rotational_fit.h"
 
 namespace polarform::studio {
@@ -26,6 +30,10 @@ struct FitSettings {
 };
 
 RotationalFitOptions to_fit_options(const FitSettings& settings, int threads);
+
+// The settings a fit project asks for; `ignored` gets a note for each project field the studio's
+// surface fit does not use (polar method, centre/axis overrides, skip-bad).
+FitSettings fit_settings(const FitProject& project, std::vector<std::string>& ignored);
 
 // Draws the options; true when one changed.
 bool draw_fit_options(FitSettings& settings);

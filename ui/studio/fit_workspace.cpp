@@ -2,6 +2,7 @@
 
 #include <imgui.h>
 
+#include <cctype>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -66,10 +67,26 @@ std::string FitWorkspace::document_name() const {
 }
 
 bool FitWorkspace::open(const std::filesystem::path& file, bool) {
+  std::filesystem::path cloud = file;
+  std::string extension = file.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (extension == ".xml") {  // a fit project: its settings, then its scan
+    std::vector<std::string> notes;
+    FitProject project;
+    if (!guarded(log(), "Open " + file.filename().string(),
+                 [&] { project = read_fit_project(file, notes); }))
+      return false;
+    for (const std::string& note : notes) log().warning(note);
+    std::vector<std::string> ignored;
+    settings_ = fit_settings(project, ignored);
+    for (const std::string& field : ignored)
+      log().warning(file.filename().string() + ": not used by the studio: " + field);
+    cloud = scan_path(project, file);
+  }
   fit_task_.cancel();
-  loading_ = file;
-  load_task_.start([file](TaskControl& control) { return load_cloud(file, control); });
-  log().info("Reading " + file.string());
+  loading_ = cloud;
+  load_task_.start([cloud](TaskControl& control) { return load_cloud(cloud, control); });
+  log().info("Reading " + cloud.string());
   return true;
 }
 

@@ -226,6 +226,19 @@ TEST_F(StudioTest, FitWorkspaceRendersTheFittedScan) {
   EXPECT_LT(number(n, "rms_mm"), 1.0);
 }
 
+// A fit project sets the options and names the scan: a closed spherical fit, G1 poles, 12 x 24.
+TEST_F(StudioTest, FitWorkspaceOpensAFitProject) {
+  const StudioRun r = screenshot(kExamples / "scans" / "sphere_like_fit.xml", "fit");
+  const auto n = numbers(r.output);
+  EXPECT_EQ(number(n, "points"), 3000) << r.output;
+  EXPECT_EQ(number(n, "fitted"), 1) << r.output;
+  EXPECT_NE(r.output.find("method=spherical"), std::string::npos) << r.output;
+  // Bicubic F of 12 x 24 times the RQB base sphere: (5, 5), 35 x 81 control points.
+  EXPECT_NE(r.output.find("control_points=35x81"), std::string::npos) << r.output;
+  EXPECT_LT(number(n, "rms_mm"), 0.03);  // σ = 0.02 mm
+  EXPECT_EQ(error_count(r.output), 0) << r.output;
+}
+
 TEST_F(StudioTest, ScriptedEditChangesTheReportedNumbers) {
   const StudioRun r = run_studio("--project '" + (kExamples / "cams" / "roller.xml").string() +
                                  "' --workspace cam --bench-frames 20 --size 1280x800");

@@ -1,4 +1,4 @@
-// Document kind: project XML goes to the cam or vessel workspace by its root element, scans to
+// Document kind: project XML goes to the cam, vessel or fit workspace by its root element, scans to
 // the fit workspace by extension (any case); unknown types, broken XML and XML holding neither
 // design are refused with InputError naming the file.
 #include "ui/studio/document_kind.h"
@@ -46,6 +46,7 @@ class DocumentKindTest : public testing::Test {
 TEST_F(DocumentKindTest, ExampleProjects) {
   EXPECT_EQ(document_kind(kExamples / "cams" / "roller.xml"), WorkspaceKind::cam);
   EXPECT_EQ(document_kind(kExamples / "vessels" / "ellipsoidal_2_1.xml"), WorkspaceKind::vessel);
+  EXPECT_EQ(document_kind(kExamples / "scans" / "sphere_like_fit.xml"), WorkspaceKind::fit);
 }
 
 TEST_F(DocumentKindTest, BareAndWrappedRootElements) {
@@ -54,6 +55,8 @@ TEST_F(DocumentKindTest, BareAndWrappedRootElements) {
   EXPECT_EQ(document_kind(write("c.xml", "<vessel/>")), WorkspaceKind::vessel);
   EXPECT_EQ(document_kind(write("d.xml", "<polarform><vessel/></polarform>")),
             WorkspaceKind::vessel);
+  EXPECT_EQ(document_kind(write("e.xml", "<fit scan=\"s.ply\"/>")), WorkspaceKind::fit);
+  EXPECT_EQ(document_kind(write("f.xml", "<polarform><fit/></polarform>")), WorkspaceKind::fit);
 }
 
 TEST_F(DocumentKindTest, ScansGoToTheFitWorkspaceWithoutBeingRead) {
@@ -66,7 +69,7 @@ TEST_F(DocumentKindTest, RefusesWhatNoWorkspaceReads) {
   expect_refused(dir_ / "no_extension", "unknown file type ''");
   expect_refused(write("broken.xml", "<cam><segments></cam"), "");
   expect_refused(write("other.xml", "<polarform><pump/></polarform>"),
-                 "neither a cam nor a vessel project");
+                 "neither a cam, a vessel nor a fit project");
   expect_refused(write("empty.xml", ""), "");
 }
 
