@@ -66,8 +66,25 @@ std::string FitWorkspace::document_name() const {
   return loading_.empty() ? "no point cloud" : loading_.filename().string();
 }
 
+bool FitWorkspace::save(const std::filesystem::path& file) {
+  if (!cloud_) return false;
+  // The scan relative to the project when it lies below the project's folder, else absolute.
+  const std::filesystem::path scan = std::filesystem::absolute(cloud_->file);
+  const std::filesystem::path relative =
+      scan.lexically_relative(std::filesystem::absolute(file).parent_path());
+  const bool below = !relative.empty() && *relative.begin() != "..";
+  if (!guarded(log(), "Save " + file.filename().string(), [&] {
+        write_fit_project(fit_project(settings_, below ? relative : scan), file);
+      }))
+    return false;
+  project_path_ = file;
+  log().info("Saved " + file.string());
+  return true;
+}
+
 bool FitWorkspace::open(const std::filesystem::path& file, bool) {
   std::filesystem::path cloud = file;
+  project_path_.clear();
   std::string extension = file.extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (extension == ".xml") {  // a fit project: its settings, then its scan
@@ -82,6 +99,7 @@ bool FitWorkspace::open(const std::filesystem::path& file, bool) {
     for (const std::string& field : ignored)
       log().warning(file.filename().string() + ": not used by the studio: " + field);
     cloud = scan_path(project, file);
+    project_path_ = file;
   }
   fit_task_.cancel();
   loading_ = cloud;

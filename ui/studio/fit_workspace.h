@@ -45,10 +45,13 @@ class FitWorkspace : public Workspace {
   void draw() override;
 
   bool open(const std::filesystem::path& file, bool as_template) override;
-  std::filesystem::path document_path() const override {
-    return cloud_ ? cloud_->file : std::filesystem::path();
-  }
+  // The fit project's path; empty for a cloud opened directly, so that Save asks where (it never
+  // writes over the cloud).
+  std::filesystem::path document_path() const override { return project_path_; }
   std::string document_name() const override;
+  bool can_save() const override { return cloud_ != nullptr; }
+  // Writes a fit project: the current options and the cloud's path relative to `file`.
+  bool save(const std::filesystem::path& file) override;
 
   std::optional<ExportRequest> draw_export_menu() override;
   void export_to(const ExportRequest& request, const std::filesystem::path& file) override;
@@ -70,6 +73,7 @@ class FitWorkspace : public Workspace {
   std::optional<FitRun> fit_;
   FitSettings settings_;
   std::filesystem::path loading_;
+  std::filesystem::path project_path_;
   std::string fit_error_;
   double fit_seconds_ = 0.0;
   bool fit_on_open_ = true;

@@ -1,0 +1,44 @@
+// The surface-fit options of the fit workspace — method (automatic from the quadric, spherical,
+// cylindrical), degrees, a tolerance or a fixed control net, fairness, base arcs, closure and pole
+// treatment — their translation into the fitter's RotationalFitOptions, and their exchange with
+// fit project files (export/project/fit_project.h).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "export/project/fit_project.h"
+#include "src/fit/rotational_fit.h"
+
+namespace polarform::studio {
+
+struct FitSettings {
+  int method = 0;  // 0 automatic, 1 spherical, 2 cylindrical
+  int degree_u = 3, degree_v = 3;
+  // Off by default, as in `polarform fit`: a fixed 12 x 12 net always fits, whereas any default
+  // tolerance is below the noise of some scan.
+  bool use_tolerance = false;
+  double tolerance = 0.1;  // mm, on the true distance statistic `measure`
+  int measure = 1;         // ToleranceMeasure: scans are noisy, so p99 rather than the max
+  int size_u = 12, size_v = 12;
+  int fairness = 1;  // FairnessOptions::Mode
+  double fairness_weight = 1e-7;
+  bool quartic_base = false;
+  int closure = 0;  // Closure
+  int pole = 0;     // PoleTreatment (spherical), both poles
+
+  bool operator==(const FitSettings&) const = default;
+};
+
+RotationalFitOptions to_fit_options(const FitSettings& settings, int threads);
+
+// The settings a fit project asks for; `ignored` gets a note for each project field the studio's
+// surface fit does not use (polar method, centre/axis overrides, skip-bad).
+FitSettings fit_settings(const FitProject& project, std::vector<std::string>& ignored);
+
+// The fit project for these settings and this scan path (fairness and base arcs are not part of
+// the project format and keep their defaults when it is opened again).
+FitProject fit_project(const FitSettings& settings, const std::filesystem::path& scan);
+
+}  // namespace polarform::studio
