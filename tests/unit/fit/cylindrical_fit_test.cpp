@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include "src/error.h"
 #include "src/fit/membership.h"
@@ -146,6 +147,22 @@ TEST(RotationalFit, ChoosesTheMethodFromTheQuadricAndTheError) {
   const RotationalFit c = fit_rotational(m(test::cylindrical_cloud([](double, double) { return 9.0; }, 5000, 0, 30, 0, 2 * kPi, 34)), o);
   EXPECT_EQ(c.method, FitMethod::cylindrical);
   EXPECT_EQ(c.surface().degree_u(), 1);
+}
+
+// A tube: an outer and a concentric inner wall, both everywhere — refused as not single-valued.
+TEST(CylindricalFit, ConcentricWallsEverywhereAreRefused) {
+  const Eigen::Matrix3Xd outer = test::cylindrical_cloud([](double, double) { return 25.0; }, 20000, -30, 30, 0, 2 * kPi, 31);
+  const Eigen::Matrix3Xd inner = test::cylindrical_cloud([](double, double) { return 20.0; }, 20000, -30, 30, 0, 2 * kPi, 32);
+  Eigen::Matrix3Xd p(3, outer.cols() + inner.cols());
+  p << outer, inner;
+  std::mt19937 rng(33);
+  std::normal_distribution<double> N(0.0, 0.02);
+  for (Eigen::Index k = 0; k < p.cols(); ++k) p.col(k) += Eigen::Vector3d(N(rng), N(rng), N(rng));
+  CylindricalFitOptions o;
+  o.frame.origin = Eigen::Vector3d::Zero();
+  o.frame.axis = Eigen::Vector3d::UnitZ();
+  EXPECT_THROW(fit_cylindrical(p, o), InputError);
+  EXPECT_NO_THROW(fit_cylindrical(outer, o));
 }
 
 }  // namespace

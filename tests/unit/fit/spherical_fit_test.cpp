@@ -5,6 +5,8 @@
 // gives the rigidly moved surface; rays that cross the data twice are refused.
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -259,6 +261,24 @@ TEST(SphericalFit, RefusesDataWhoseRaysCrossTwice) {
     EXPECT_NE(msg.find("not single-valued"), std::string::npos) << msg;
     EXPECT_NE(msg.find("phi (deg) in ["), std::string::npos) << msg;
   }
+}
+
+// A hollow ball: an outer and a concentric inner sphere, both everywhere. The noise must be
+// estimated within each shell, not from the distance between them.
+TEST(SphericalFit, ConcentricShellsEverywhereAreRefused) {
+  const Eigen::Matrix3Xd outer = test::spherical_cloud([](double, double) { return 40.0; }, 20000, 0, kPi, 0, 2 * kPi, 21);
+  const Eigen::Matrix3Xd inner = test::spherical_cloud([](double, double) { return 30.0; }, 20000, 0, kPi, 0, 2 * kPi, 22);
+  Eigen::Matrix3Xd p(3, outer.cols() + inner.cols());
+  p << outer, inner;
+  std::mt19937 rng(23);
+  std::normal_distribution<double> N(0.0, 0.02);
+  for (Eigen::Index k = 0; k < p.cols(); ++k) p.col(k) += Eigen::Vector3d(N(rng), N(rng), N(rng));
+  SphericalFitOptions o;
+  o.frame.origin = Eigen::Vector3d::Zero();
+  o.frame.axis = Eigen::Vector3d::UnitZ();
+  EXPECT_THROW(fit_spherical(p, o), InputError);
+  // Each shell alone fits.
+  EXPECT_NO_THROW(fit_spherical(outer, o));
 }
 
 TEST(SphericalFit, PointMembershipAgainstASphere) {
