@@ -49,4 +49,11 @@ void write_file_atomically(const fs::path& path, std::string_view content) {
   write_file_atomically(path, [&](std::ostream& out) { out << content; });
 }
 
+void write_files_atomically(const fs::path& dir, const std::map<std::string, std::string>& files) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (!fs::is_directory(dir)) throw InputError(dir.string() + ": cannot create the output directory");
+  for (const auto& [name, text] : files) write_file_atomically(dir / name, text);
+}
+
 }  // namespace polarform

@@ -5,7 +5,9 @@
 
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <ostream>
+#include <string>
 #include <string_view>
 
 namespace polarform {
@@ -17,5 +19,10 @@ void write_file_atomically(const std::filesystem::path& path,
 
 // Same, for content already in memory.
 void write_file_atomically(const std::filesystem::path& path, std::string_view content);
+
+// A job's outputs: creates dir if missing (InputError if it cannot), then writes every
+// file name → content atomically into it.
+void write_files_atomically(const std::filesystem::path& dir,
+                            const std::map<std::string, std::string>& files);
 
 }  // namespace polarform

@@ -121,4 +121,11 @@ void HtmlReport::save(const std::filesystem::path& path) const {
   write_file_atomically(path, html());
 }
 
+void HtmlReport::add_file_list(const std::vector<std::string>& files) {
+  add_heading("Files");
+  std::string list;
+  for (const std::string& f : files) list += (list.empty() ? "" : ", ") + f;
+  add_paragraph(list);
+}
+
 }  // namespace polarform

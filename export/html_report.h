@@ -26,6 +26,8 @@ class HtmlReport {
   // An SVG document (e.g. Figure::svg()) inline, numbered and captioned "Figure n. caption".
   // Throws InputError if svg_text is not a well-formed document with an <svg> root.
   void add_svg(const std::string& svg_text, const std::string& caption);
+  // A "Files" heading and the run's output files, comma-separated.
+  void add_file_list(const std::vector<std::string>& files);
 
   std::string html() const;
   // Writes html() to path atomically.

@@ -25,7 +25,33 @@ NurbsCurve3d track_curve(const PolarConversion& c, double radius, double offset)
                                    c.base.curve().homogeneous(), {0, 1, 2, 2}));
 }
 
+// The track height z(φ) + offset as the converter's (positive) polar function, exact form kept.
+PolarFunction offset_track_height(const BarrelCam& barrel, double offset) {
+  PolarFunction f = barrel.track_height();
+  const auto height = f.derivatives;
+  f.derivatives = [height, offset](double t, int d, double* out) {
+    height(t, d, out);
+    out[0] += offset;
+  };
+  if (f.exact) {
+    const BSpline& e = f.exact->spline();
+    f.exact = BSplineFunction(
+        BSpline(e.degree(), e.knots(), Eigen::MatrixXd(e.coefs().array() + offset)));
+  }
+  return f;
+}
+
 }  // namespace
+
+double track_height_offset(const CamDesign& design) {
+  // s >= 0 is measured from the lowest level, so z >= z0.
+  return std::max(0.0, -design.z0) + design.cylinder_radius;
+}
+
+PolarFunction cam_profile_function(const CamDesign& design) {
+  if (design.type == CamType::Plate) return cam_polar_function(make_plate_cam(design));
+  return offset_track_height(make_barrel_cam(design), track_height_offset(design));
+}
 
 CamJobResult run_cam_job(const CamProject& project, const CamJobOptions& options) {
   const auto start = std::chrono::steady_clock::now();
@@ -60,21 +86,8 @@ CamJobResult run_cam_job(const CamProject& project, const CamJobOptions& options
     r.barrel = make_barrel_cam(design);
     for (double theta : r.angles)
       r.barrel_pressure_angle.push_back(r.barrel->pressure_angle(theta, design.cylinder_radius));
-    // The converter works on positive polar functions: convert z + offset.
-    r.profile_function = r.barrel->track_height();
-    // s >= 0 is measured from the lowest level, so z >= z0.
-    r.track_offset = std::max(0.0, -design.z0) + design.cylinder_radius;
-    const auto height = r.profile_function.derivatives;
-    const double offset = r.track_offset;
-    r.profile_function.derivatives = [height, offset](double t, int d, double* out) {
-      height(t, d, out);
-      out[0] += offset;
-    };
-    if (r.profile_function.exact) {
-      const BSpline& e = r.profile_function.exact->spline();
-      r.profile_function.exact = BSplineFunction(
-          BSpline(e.degree(), e.knots(), Eigen::MatrixXd(e.coefs().array() + offset)));
-    }
+    r.track_offset = track_height_offset(design);
+    r.profile_function = offset_track_height(*r.barrel, r.track_offset);
     r.conversion = convert_polar_function(r.profile_function, project.conversion);
     r.track = track_curve(r.conversion, design.cylinder_radius, r.track_offset);
     if (design.groove_depth > 0) {

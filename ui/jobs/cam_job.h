@@ -51,6 +51,11 @@ struct CamJobResult {
   double seconds = 0.0;            // wall time of the computation
 };
 
+// What the job converts: the plate cam's contour R(ψ), or the cylindrical cam's track height
+// z(φ) + track_height_offset(design) (the converter takes positive polar functions).
+PolarFunction cam_profile_function(const CamDesign& design);
+double track_height_offset(const CamDesign& design);
+
 // Throws InputError (bad design, undercut, …) or NumericalError with a message naming the cause.
 CamJobResult run_cam_job(const CamProject& project, const CamJobOptions& options = {});
 

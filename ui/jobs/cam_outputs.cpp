@@ -17,6 +17,7 @@
 #include "polarform_version.h"
 #include "src/error.h"
 #include "ui/jobs/cam_plots.h"
+#include "ui/jobs/conversion_report.h"
 
 namespace polarform {
 
@@ -126,10 +127,7 @@ std::string html_report(const CamJobResult& r, const CamOutputOptions& o, const 
     html.add_paragraph("Degree-" + std::to_string(r.limited->curve.degree()) + " profile (profile_deg3.dxf): " +
                        std::to_string(r.limited->control_points) + " control points, measured max radial error " +
                        format_trimmed(r.limited->max_radial_error * 1e3, 4) + " µm.");
-  html.add_heading("Files");
-  std::string files;
-  for (const auto& f : report["files"]) files += (files.empty() ? "" : ", ") + f.get<std::string>();
-  html.add_paragraph(files);
+  html.add_file_list(report["files"].get<std::vector<std::string>>());
   return html.html();
 }
 
@@ -166,24 +164,9 @@ json cam_report_json(const CamJobResult& r, const std::vector<std::string>& file
                                {"jump_per_rad", i.jump()}, {"message", i.message()}});
   // Conversion (the fields the issue fixes first).
   const bool plate = r.plate.has_value();
-  j["tolerance_mm"] = c.tolerance;
-  j["arcs"] = c.arcs.size();
-  j["degree"] = plate ? r.profile.degree() : r.track.degree();
-  j["control_points"] = plate ? r.profile.size() : r.track.size();
-  j["knot_count"] = plate ? r.profile.knots().size() : r.track.knots().size();
-  j["max_radial_error_mm"] = c.max_radial_error;
-  j["max_normal_error_mm"] = c.max_normal_error;
-  j["worst_angle_deg"] = angle_deg(c.worst_angle);
-  j["max_tangent_jump_deg"] = c.max_tangent_jump * kDeg;
-  j["base"] = c.base.kind() == ArcKind::quartic ? "quasi-uniform" : "rqb";
-  j["alpha"] = c.base.alpha_rule() == AlphaRule::minimax ? "minimax" : "printed";
-  j["error_budget"] = {{"function_mm", c.function_error},
-                       {"function_exact", c.function_exact},
-                       {"synchronization_mm", c.synchronization_error}};
-  j["arc_list"] = json::array();
-  for (const ArcSummary& a : c.arcs)
-    j["arc_list"].push_back({{"start_deg", angle_deg(a.start)}, {"sweep_deg", a.sweep * kDeg},
-                             {"max_radial_error_mm", a.max_radial_error}});
+  add_conversion_fields(j, c, plate ? r.profile.degree() : r.track.degree(),
+                        plate ? r.profile.size() : r.track.size(),
+                        plate ? r.profile.knots().size() : r.track.knots().size());
   if (!r.groove.empty()) {
     const GrooveSurface& g = r.groove.front();
     j["groove"] = {{"depth_mm", r.project.cam.groove_depth},
@@ -319,11 +302,7 @@ std::vector<std::string> write_cam_outputs(const CamJobResult& r, const std::fil
   content["report.json"] = report.dump(2) + "\n";
   content["report.html"] = html_report(r, o, report, svgs);
 
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (!std::filesystem::is_directory(dir))
-    throw InputError(dir.string() + ": cannot create the output directory");
-  for (const auto& [name, text] : content) write_file_atomically(dir / name, text);
+  write_files_atomically(dir, content);
   return files;
 }
 

@@ -136,10 +136,7 @@ std::string html_report(const FitJobResult& r, const json& report, const std::st
                                         {"product", format_trimmed(t.product, 4)},
                                         {"error", format_trimmed(t.error, 4)},
                                         {"total", format_trimmed(t.total, 4)}});
-  html.add_heading("Files");
-  std::string files;
-  for (const auto& f : report["files"]) files += (files.empty() ? "" : ", ") + f.get<std::string>();
-  html.add_paragraph(files);
+  html.add_file_list(report["files"].get<std::vector<std::string>>());
   return html.html();
 }
 
@@ -273,11 +270,7 @@ std::vector<std::string> write_fit_outputs(const FitJobResult& r,
   content["report.json"] = report.dump(2) + "\n";
   content["report.html"] = html_report(r, report, preview);
 
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (!std::filesystem::is_directory(dir))
-    throw InputError(dir.string() + ": cannot create the output directory");
-  for (const auto& [file, text] : content) write_file_atomically(dir / file, text);
+  write_files_atomically(dir, content);
   write_ply(dir / "deviation.ply", r.points, &colors, &deviation, "deviation");
   return files;
 }

@@ -144,10 +144,7 @@ std::string html_report(const ScanCamJobResult& r, const json& report,
                       format_trimmed(r.comparison->svaj_stats[k].max, 6)});
     html.add_table({"quantity", "rms difference", "max |difference|"}, rows);
   }
-  html.add_heading("Files");
-  std::string files;
-  for (const auto& f : report["files"]) files += (files.empty() ? "" : ", ") + f.get<std::string>();
-  html.add_paragraph(files);
+  html.add_file_list(report["files"].get<std::vector<std::string>>());
   return html.html();
 }
 
@@ -262,11 +259,7 @@ std::vector<std::string> write_scan_cam_outputs(const ScanCamJobResult& r,
   content["report.json"] = report.dump(2) + "\n";
   content["report.html"] = html_report(r, report, svgs);
 
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (!std::filesystem::is_directory(dir))
-    throw InputError(dir.string() + ": cannot create the output directory");
-  for (const auto& [name, text] : content) write_file_atomically(dir / name, text);
+  write_files_atomically(dir, content);
   return files;
 }
 

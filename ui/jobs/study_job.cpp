@@ -94,12 +94,8 @@ StudyJobResult run_study_job(const CamProject& project, const std::vector<double
     if (!(tol >= kMinTolerance))
       throw InputError("study tolerance " + format_round_trip(tol) + " mm: expected >= " +
                        format_round_trip(kMinTolerance) + " mm");
-  CamJobOptions options;
-  options.with_limited = false;
-  options.analysis_angles = 16;
-  const CamJobResult cam = run_cam_job(project, options);
   StudyJobResult r;
-  r.rows = tolerance_study(cam.profile_function, tolerances, progress);
+  r.rows = tolerance_study(cam_profile_function(project.cam), tolerances, progress);
   r.deviation = angle_deviation_study(40);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
@@ -150,11 +146,7 @@ std::vector<std::string> write_study_outputs(const StudyJobResult& r, const std:
                                          {"files", files},
                                          {"seconds", r.seconds}};
   content["report.json"] = report.dump(2) + "\n";
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (!std::filesystem::is_directory(dir))
-    throw InputError(dir.string() + ": cannot create the output directory");
-  for (const auto& [name, text] : content) write_file_atomically(dir / name, text);
+  write_files_atomically(dir, content);
   return files;
 }
 

@@ -16,6 +16,7 @@
 #include "polarform_version.h"
 #include "src/error.h"
 #include "ui/jobs/vessel_plots.h"
+#include "ui/jobs/conversion_report.h"
 
 namespace polarform {
 
@@ -211,10 +212,7 @@ std::string html_report(const VesselJobResult& r, const VesselOutputOptions& o, 
     arcs.push_back({format_trimmed(a.start * kDeg, 4), format_trimmed(a.sweep * kDeg, 4),
                     format_trimmed(a.max_radial_error * 1e3, 4)});
   html.add_table({"arc start [deg]", "sweep [deg]", "max radial error [µm]"}, arcs);
-  html.add_heading("Files");
-  std::string files;
-  for (const auto& f : report["files"]) files += (files.empty() ? "" : ", ") + f.get<std::string>();
-  html.add_paragraph(files);
+  html.add_file_list(report["files"].get<std::vector<std::string>>());
   return html.html();
 }
 
@@ -246,24 +244,7 @@ json vessel_report_json(const VesselJobResult& r, const std::vector<std::string>
                {"junction_slope_deg", s.junction_slope * kDeg},
                {"apex_slope_deg", s.apex_slope * kDeg}};
   // Conversion: the same field names as the cam report.
-  j["tolerance_mm"] = c.tolerance;
-  j["arcs"] = c.arcs.size();
-  j["degree"] = c.curve.degree();
-  j["control_points"] = c.curve.size();
-  j["knot_count"] = c.curve.knots().size();
-  j["max_radial_error_mm"] = c.max_radial_error;
-  j["max_normal_error_mm"] = c.max_normal_error;
-  j["worst_angle_deg"] = c.worst_angle * kDeg;
-  j["max_tangent_jump_deg"] = c.max_tangent_jump * kDeg;
-  j["base"] = c.base.kind() == ArcKind::quartic ? "quasi-uniform" : "rqb";
-  j["alpha"] = c.base.alpha_rule() == AlphaRule::minimax ? "minimax" : "printed";
-  j["error_budget"] = {{"function_mm", c.function_error},
-                       {"function_exact", c.function_exact},
-                       {"synchronization_mm", c.synchronization_error}};
-  j["arc_list"] = json::array();
-  for (const ArcSummary& a : c.arcs)
-    j["arc_list"].push_back({{"start_deg", a.start * kDeg}, {"sweep_deg", a.sweep * kDeg},
-                             {"max_radial_error_mm", a.max_radial_error}});
+  add_conversion_fields(j, c, c.curve.degree(), c.curve.size(), c.curve.knots().size());
   j["surfaces"] = {{"head", surface_json(r.surfaces.head)},
                    {"cylinder", surface_json(r.surfaces.cylinder)},
                    {"far_head", surface_json(r.surfaces.far_head)}};
@@ -332,11 +313,7 @@ std::vector<std::string> write_vessel_outputs(const VesselJobResult& r,
   content["report.json"] = report.dump(2) + "\n";
   content["report.html"] = html_report(r, o, report, svgs);
 
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (!std::filesystem::is_directory(dir))
-    throw InputError(dir.string() + ": cannot create the output directory");
-  for (const auto& [name, text] : content) write_file_atomically(dir / name, text);
+  write_files_atomically(dir, content);
   return files;
 }
 

@@ -111,11 +111,7 @@ std::vector<std::string> write_viz_outputs(const VizJobResult& r,
   files.push_back("report.json");
   std::sort(files.begin(), files.end());
   content["report.json"] = viz_report_json(r, files).dump(2) + "\n";
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (!std::filesystem::is_directory(dir))
-    throw InputError(dir.string() + ": cannot create the output directory");
-  for (const auto& [file, text] : content) write_file_atomically(dir / file, text);
+  write_files_atomically(dir, content);
   return files;
 }
 
