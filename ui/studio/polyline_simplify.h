@@ -1,5 +1,5 @@
 // Drawing fewer vertices for the same picture: a pixel polyline reduced to the points where it
-// bends by more than a fraction of a pixel (sliding-window simplification: every dropped point
+// bends by more than a fraction of a pixel (Douglas–Peucker simplification: every dropped point
 // lies within `tolerance` pixels of the chord that replaces it). Software OpenGL (Mesa llvmpipe)
 // pays per triangle, and smooth or flat stretches of the motion curves need only a few.
 #pragma once
