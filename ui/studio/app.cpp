@@ -13,7 +13,9 @@
 #include "ui/studio/gl_api.h"
 #include "ui/studio/guarded.h"
 #include "ui/studio/png_capture.h"
+#include "src/error.h"
 #include "ui/studio/splitter.h"
+#include "ui/studio/studio_script.h"
 #include "ui/studio/template_picker.h"
 #include "ui/studio/workspace_factory.h"
 
@@ -53,8 +55,8 @@ std::filesystem::path examples_directory() {
 
 App::App(StudioOptions options)
     : options_(std::move(options)),
-      persist_(!options_.headless()),
-      state_file_(config_directory() / "state.ini"),
+      persist_(!options_.headless() || options_.state_dir),
+      state_file_(options_.state_dir.value_or(config_directory()) / "state.ini"),
       state_(persist_ ? load_state(state_file_, log_) : PersistentState{}),
       context_{log_, state_.layout, examples_directory()} {
   if (persist_) {
@@ -71,8 +73,9 @@ App::App(StudioOptions options)
     open_document(*options_.project);
   } else if (persist_ && !state_.last_project.empty() &&
              std::filesystem::exists(state_.last_project)) {
+    const WorkspaceKind last_workspace = state_.workspace;  // opening remembers the project's own
     open_document(state_.last_project);
-    active_ = state_.workspace;
+    active_ = last_workspace;
   } else {
     open_document(context_.examples / "cams" / "roller.xml", true);
   }
@@ -101,6 +104,10 @@ int App::run() {
     std::cerr << "polarform-studio: the " << workspace_name(*options_.workspace)
               << " workspace is not part of this build\n";
     return 2;
+  }
+  if (options_.script) {
+    const int status = run_script();
+    if (status != 0 || (!options_.screenshot && options_.bench_frames == 0)) return status;
   }
   if (options_.screenshot) return run_screenshot();
   if (options_.bench_frames > 0) return run_bench();
@@ -154,20 +161,136 @@ bool App::settle() {
   }
 }
 
-int App::run_screenshot() {
-  if (!settle()) std::cerr << "polarform-studio: computations did not settle within 10 minutes\n";
+bool App::screenshot(const std::filesystem::path& png) {
   frame();
   glFinish();
-  int status = 0;
-  if (!guarded(log_, "Screenshot", [&] {
-        capture_png(*options_.screenshot, window_->framebuffer_width(),
-                    window_->framebuffer_height());
-      }))
-    status = 1;
+  const bool written = guarded(log_, "Screenshot", [&] {
+    capture_png(png, window_->framebuffer_width(), window_->framebuffer_height());
+  });
   window_->swap();
+  return written;
+}
+
+int App::run_screenshot() {
+  if (!settle()) std::cerr << "polarform-studio: computations did not settle within 10 minutes\n";
+  const int status = screenshot(*options_.screenshot) ? 0 : 1;
   std::cout << active().numbers();
   std::cout << "errors: " << log_.error_count() << "\n";
   return status;
+}
+
+int App::run_script() {
+  std::vector<ScriptAction> script;
+  try {
+    script = read_script(*options_.script);
+  } catch (const InputError& e) {
+    std::cerr << "polarform-studio: " << e.what() << "\n";
+    return 2;
+  }
+  settle();
+  const std::size_t errors_before = log_.error_count();
+  for (const ScriptAction& action : script) {
+    std::cout << "script " << options_.script->filename().string() << ":" << action.line << ": "
+              << action.text << "\n";
+    run_action(action);
+    if (!settle())
+      log_.error("Script line " + std::to_string(action.line) +
+                 ": the computations did not settle within 10 minutes");
+  }
+  std::cout << "errors: " << log_.error_count() << "\n";
+  return log_.error_count() == errors_before ? 0 : 1;
+}
+
+void App::run_action(const ScriptAction& action) {
+  const auto& args = action.arguments;
+  const std::string where = "Script line " + std::to_string(action.line) + ": ";
+  const std::string here = "the " + std::string(workspace_name(active_)) + " workspace";
+  switch (action.verb) {
+    case ScriptVerb::open:
+      open_document(args[0]);
+      break;
+    case ScriptVerb::drop:
+      window_->drop({args.begin(), args.end()});
+      break;
+    case ScriptVerb::new_from_template:
+      open_template(*parse_workspace(args[0]), args[1], where);
+      break;
+    case ScriptVerb::workspace:
+      if (const Workspace* w = workspace(*parse_workspace(args[0])))
+        select_tab_ = active_ = w->kind();
+      else
+        log_.error(where + "the " + args[0] + " workspace is not part of this build");
+      break;
+    case ScriptVerb::edit:
+      active().bench_step(0, 1);
+      break;
+    case ScriptVerb::undo:
+      if (active().can_undo())
+        active().undo();
+      else
+        log_.error(where + "nothing to undo in " + here);
+      break;
+    case ScriptVerb::redo:
+      if (active().can_redo())
+        active().redo();
+      else
+        log_.error(where + "nothing to redo in " + here);
+      break;
+    case ScriptVerb::save:
+      if (!active().can_save())
+        log_.error(where + here + " has nothing to save");
+      else if (active().document_path().empty())
+        log_.error(where + active().document_name() + " has no file yet: use save-as PATH");
+      else
+        save(false);
+      break;
+    case ScriptVerb::save_as:
+      if (!active().can_save())
+        log_.error(where + here + " has nothing to save");
+      else if (active().save(args[0]))
+        state_.remember(args[0], active_);
+      break;
+    case ScriptVerb::export_file:
+      export_by_tag(args[0], args[1], where);
+      break;
+    case ScriptVerb::screenshot:
+      screenshot(args[0]);
+      break;
+    case ScriptVerb::numbers:
+      std::cout << (args.empty() ? "numbers" : args[0]) << ":\n" << active().numbers();
+      break;
+  }
+}
+
+void App::open_template(WorkspaceKind kind, const std::string& name, const std::string& where) {
+  const Workspace* w = workspace(kind);
+  const auto templates = w ? list_templates(context_.examples / w->template_folder())
+                           : std::vector<std::filesystem::path>{};
+  const auto found = std::find_if(templates.begin(), templates.end(),
+                                  [&](const auto& f) { return f.stem() == name; });
+  if (found != templates.end()) return open_document(*found, true);
+  std::string names;
+  for (const auto& f : templates) names += " " + f.stem().string();
+  log_.error(where + "no " + std::string(workspace_name(kind)) + " template '" + name +
+             "' (templates:" + names + ")");
+}
+
+void App::export_by_tag(const std::string& tag, const std::filesystem::path& path,
+                        const std::string& where) {
+  const auto choices = active().export_choices();
+  const auto choice = std::find_if(choices.begin(), choices.end(),
+                                   [&](const ExportChoice& c) { return c.request.tag == tag; });
+  if (choice == choices.end()) {
+    std::string tags;
+    for (const auto& c : choices) tags += " " + c.request.tag;
+    log_.error(where + "the " + std::string(workspace_name(active_)) + " workspace has no export '" +
+               tag + "' (exports:" + tags + ")");
+  } else if (!choice->enabled) {
+    log_.error(where + "export " + tag + " is not available now" +
+               (choice->tooltip.empty() ? "" : ": " + choice->tooltip));
+  } else {
+    active().export_to(choice->request, path);
+  }
 }
 
 int App::run_bench() {
@@ -225,6 +348,17 @@ void App::save(bool choose_path) {
     return;
   }
   if (w.save(w.document_path())) state_.remember(w.document_path(), w.kind());
+}
+
+void App::ask_export_path(const ExportRequest& request) {
+  pending_export_ = request;
+  purpose_ = DialogPurpose::export_file;
+  const auto dir = active().document_path().empty() ? std::filesystem::current_path()
+                                                    : active().document_path().parent_path();
+  dialog_.show(FileDialog::Mode::save, request.title,
+               request.extension.empty() ? std::vector<std::string>{}
+                                         : std::vector<std::string>{request.extension},
+               dir, request.default_name);
 }
 
 void App::ask_to_open() {
@@ -323,15 +457,12 @@ void App::draw_file_menu() {
   if (ImGui::MenuItem("Save", "Ctrl+S", false, active().can_save())) save(false);
   if (ImGui::MenuItem("Save as…", "Ctrl+Shift+S", false, active().can_save())) save(true);
   if (ImGui::BeginMenu("Export")) {
-    if (auto request = active().draw_export_menu()) {
-      pending_export_ = *request;
-      purpose_ = DialogPurpose::export_file;
-      const auto dir = active().document_path().empty() ? std::filesystem::current_path()
-                                                        : active().document_path().parent_path();
-      dialog_.show(FileDialog::Mode::save, request->title,
-                   request->extension.empty() ? std::vector<std::string>{}
-                                              : std::vector<std::string>{request->extension},
-                   dir, request->default_name);
+    for (const ExportChoice& choice : active().export_choices()) {
+      if (choice.separated) ImGui::Separator();
+      if (ImGui::MenuItem(choice.label.c_str(), nullptr, false, choice.enabled))
+        ask_export_path(choice.request);
+      if (!choice.tooltip.empty() && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("%s", choice.tooltip.c_str());
     }
     ImGui::EndMenu();
   }

@@ -14,6 +14,7 @@
 #include "ui/studio/persistent_state.h"
 #include "ui/studio/platform_window.h"
 #include "ui/studio/studio_options.h"
+#include "ui/studio/studio_script.h"
 #include "ui/studio/workspace.h"
 
 namespace polarform::studio {
@@ -31,6 +32,16 @@ class App {
   int run_interactive();
   int run_screenshot();
   int run_bench();
+  // Runs --script: exit code 2 for a script that does not parse (nothing runs), 1 when an action
+  // failed (the log says why), else 0.
+  int run_script();
+  void run_action(const ScriptAction& action);
+  // Renders the current state and writes it to a PNG; false (logged) when it cannot be written.
+  bool screenshot(const std::filesystem::path& png);
+  // File ▸ New from template by name, File ▸ Export by tag; failures are logged after `where`.
+  void open_template(WorkspaceKind kind, const std::string& name, const std::string& where);
+  void export_by_tag(const std::string& tag, const std::filesystem::path& path,
+                     const std::string& where);
   // Renders frames until no workspace is busy (at least a few, for ImGui's layout); false on
   // timeout.
   bool settle();
@@ -51,6 +62,7 @@ class App {
   void open_document(const std::filesystem::path& file, bool as_template = false);
   void save(bool choose_path);
   void ask_to_open();
+  void ask_export_path(const ExportRequest& request);
   void update_title();
 
   StudioOptions options_;

@@ -2,8 +2,6 @@
 // of `polarform cam` into a folder, or one profile file (IGES, STEP, DXF, X3D) — the exact-degree
 // profile, or the degree-capped one when the project limits the degree — and the sampled motion
 // as CSV. Part of CamWorkspace (cam_workspace.h).
-#include <imgui.h>
-
 #include <algorithm>
 #include <cctype>
 
@@ -66,29 +64,27 @@ void write_profile(const CamJobResult& r, const std::string& format,
 
 }  // namespace
 
-std::optional<ExportRequest> CamWorkspace::draw_export_menu() {
+std::vector<ExportChoice> CamWorkspace::export_choices() const {
   const std::string stem = document_.path().empty() ? "cam" : document_.path().stem().string();
   const bool valid = results_.has_value() && design_error_.empty();
-  if (ImGui::MenuItem("All outputs to a folder…", nullptr, false, valid))
-    return ExportRequest{"all", "Export all outputs into the folder", "", stem + "_outputs"};
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip(
-        "What `polarform cam` writes: IGES, STEP, DXF, X3D, SVG plots, SVAJ CSV, report.html and "
-        "report.json");
-  ImGui::Separator();
-  const char* what = results_ && results_->barrel ? "Track" : "Profile";
+  std::vector<ExportChoice> choices{
+      {{"all", "Export all outputs into the folder", "", stem + "_outputs"},
+       "All outputs to a folder…",
+       valid,
+       "What `polarform cam` writes: IGES, STEP, DXF, X3D, SVG plots, SVAJ CSV, report.html and "
+       "report.json"}};
+  const std::string what = results_ && results_->barrel ? "Track" : "Profile";
   const std::pair<const char*, const char*> formats[] = {
       {"iges", ".igs"}, {"step", ".stp"}, {"dxf", ".dxf"}, {"x3d", ".x3d"}};
   for (const auto& [tag, ext] : formats) {
     std::string upper = tag;
     for (char& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    if (ImGui::MenuItem((std::string(what) + " as " + upper + "…").c_str(), nullptr, false, valid))
-      return ExportRequest{tag, "Export " + upper, ext, stem + ext};
+    choices.push_back({{tag, "Export " + upper, ext, stem + ext}, what + " as " + upper + "…",
+                       valid, "", choices.size() == 1});
   }
-  ImGui::Separator();
-  if (ImGui::MenuItem("Motion (SVAJ) as CSV…", nullptr, false, valid))
-    return ExportRequest{"csv", "Export motion CSV", ".csv", stem + "_svaj.csv"};
-  return std::nullopt;
+  choices.push_back({{"csv", "Export motion CSV", ".csv", stem + "_svaj.csv"},
+                     "Motion (SVAJ) as CSV…", valid, "", true});
+  return choices;
 }
 
 void CamWorkspace::export_to(const ExportRequest& request, const std::filesystem::path& file) {

@@ -42,7 +42,7 @@ class CamWorkspace : public Workspace {
   void undo() override { document_.undo(); }
   void redo() override { document_.redo(); }
 
-  std::optional<ExportRequest> draw_export_menu() override;
+  std::vector<ExportChoice> export_choices() const override;
   void export_to(const ExportRequest& request, const std::filesystem::path& file) override;
 
   void bench_step(int frame, int frames) override;

@@ -10,7 +10,9 @@
 #include "export/iges_writer.h"
 #include "export/step_writer.h"
 #include "export/x3d_writer.h"
+#include "designers/scan/cloud_plane.h"
 #include "src/io/point_cloud.h"
+#include "ui/jobs/fit_outputs.h"
 #include "ui/studio/colors.h"
 #include "ui/studio/guarded.h"
 #include "ui/studio/splitter.h"
@@ -347,21 +349,41 @@ void FitWorkspace::draw_view() {
   }
 }
 
-std::optional<ExportRequest> FitWorkspace::draw_export_menu() {
+FitJobResult FitWorkspace::job_result() const {
+  FitJobResult r;
+  r.input = cloud_->file;
+  r.points = cloud_->points;
+  r.dropped = cloud_->dropped;
+  r.method = to_string(fit_->fit.method);
+  r.reason = fit_->fit.reason;
+  r.plane = fit_plane(r.points);
+  r.surface = fit_->fit;
+  r.seconds = cloud_->read_seconds + fit_seconds_;
+  return r;
+}
+
+std::vector<ExportChoice> FitWorkspace::export_choices() const {
   const std::string stem = cloud_ ? cloud_->file.stem().string() + "_fit" : "fit";
-  if (ImGui::MenuItem("Surface as IGES…", nullptr, false, fit_.has_value()))
-    return ExportRequest{"iges", "Export IGES", ".igs", stem + ".igs"};
-  if (ImGui::MenuItem("Surface as STEP…", nullptr, false, fit_.has_value()))
-    return ExportRequest{"step", "Export STEP", ".stp", stem + ".stp"};
-  if (ImGui::MenuItem("Surface as X3D…", nullptr, false, fit_.has_value()))
-    return ExportRequest{"x3d", "Export X3D", ".x3d", stem + ".x3d"};
-  if (!fit_) ImGui::TextDisabled("(fit a surface first)");
-  return std::nullopt;
+  const bool ready = fit_.has_value();
+  const std::string needs = ready ? "" : "fit a surface first";
+  return {{{"all", "Export all outputs into the folder", "", stem + "_outputs"},
+           "All outputs to a folder…",
+           ready,
+           "What `polarform fit` writes: the surface as IGES, STEP and X3D, deviation.ply, "
+           "preview.svg and report.json"},
+          {{"iges", "Export IGES", ".igs", stem + ".igs"}, "Surface as IGES…", ready, needs, true},
+          {{"step", "Export STEP", ".stp", stem + ".stp"}, "Surface as STEP…", ready, needs},
+          {{"x3d", "Export X3D", ".x3d", stem + ".x3d"}, "Surface as X3D…", ready, needs}};
 }
 
 void FitWorkspace::export_to(const ExportRequest& request, const std::filesystem::path& file) {
   if (!fit_) return;
   guarded(log(), "Export " + file.filename().string(), [&] {
+    if (request.tag == "all") {
+      const auto files = write_fit_outputs(job_result(), file);
+      log().info("Wrote " + std::to_string(files.size()) + " files into " + file.string());
+      return;
+    }
     const NurbsSurface& s = fit_->fit.surface();
     if (request.tag == "iges") {
       IgesWriter w;

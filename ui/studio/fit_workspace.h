@@ -10,6 +10,7 @@
 #include <string>
 
 #include "src/fit/rotational_fit.h"
+#include "ui/jobs/fit_job.h"
 #include "ui/studio/background_task.h"
 #include "ui/studio/fit_options_panel.h"
 #include "ui/studio/scene_view.h"
@@ -53,7 +54,7 @@ class FitWorkspace : public Workspace {
   // Writes a fit project: the current options and the cloud's path relative to `file`.
   bool save(const std::filesystem::path& file) override;
 
-  std::optional<ExportRequest> draw_export_menu() override;
+  std::vector<ExportChoice> export_choices() const override;
   void export_to(const ExportRequest& request, const std::filesystem::path& file) override;
 
   void bench_step(int frame, int frames) override;
@@ -66,6 +67,8 @@ class FitWorkspace : public Workspace {
   void draw_view();
   void show_cloud();
   void show_fit();
+  // The fit as `polarform fit` reports it (for File ▸ Export ▸ All outputs).
+  FitJobResult job_result() const;
 
   BackgroundTask<LoadedCloud> load_task_;
   BackgroundTask<FitRun> fit_task_;

@@ -1,11 +1,11 @@
 #include "ui/studio/persistent_state.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cstdlib>
 #include <fstream>
-#include <iomanip>
-#include <limits>
 #include <sstream>
+#include <string_view>
 
 #include "export/atomic_file.h"
 
@@ -126,7 +126,6 @@ PersistentState load_state(const std::filesystem::path& file, MessageLog& log) {
 
 void save_state(const PersistentState& state, const std::filesystem::path& file) {
   std::ostringstream out;
-  out << std::setprecision(std::numeric_limits<float>::max_digits10);  // floats round-trip
   out << "# polarform-studio state, rewritten on exit\n";
   out << "last_project=" << state.last_project.string() << "\n";
   out << "workspace=" << workspace_name(state.workspace) << "\n";
@@ -134,7 +133,11 @@ void save_state(const PersistentState& state, const std::filesystem::path& file)
   out << "window.x=" << state.window.x << "\nwindow.y=" << state.window.y << "\n";
   out << "window.width=" << state.window.width << "\nwindow.height=" << state.window.height << "\n";
   out << "window.maximized=" << (state.window.maximized ? 1 : 0) << "\n";
-  for (const auto& [key, value] : state.layout) out << "layout." << key << "=" << value << "\n";
+  for (const auto& [key, value] : state.layout) {
+    char shortest[32];  // the shortest text that reads back as the same float: 0.42, not 0.419999987
+    const auto end = std::to_chars(shortest, shortest + sizeof shortest, value).ptr;
+    out << "layout." << key << "=" << std::string_view(shortest, end - shortest) << "\n";
+  }
   std::filesystem::create_directories(file.parent_path());
   write_file_atomically(file, out.str());
 }

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cstdio>
+#include <iterator>
 #include <stdexcept>
 #include <utility>
 
@@ -127,9 +128,14 @@ std::vector<std::filesystem::path> PlatformWindow::take_dropped_files() {
   return std::exchange(dropped_, {});
 }
 
+void PlatformWindow::drop(std::vector<std::filesystem::path> files) {
+  dropped_.insert(dropped_.end(), std::make_move_iterator(files.begin()),
+                  std::make_move_iterator(files.end()));
+}
+
 void PlatformWindow::on_drop(GLFWwindow* window, int count, const char** paths) {
   auto* self = static_cast<PlatformWindow*>(glfwGetWindowUserPointer(window));
-  for (int i = 0; i < count; ++i) self->dropped_.emplace_back(paths[i]);
+  self->drop(std::vector<std::filesystem::path>(paths, paths + count));
 }
 
 void PlatformWindow::on_content_scale(GLFWwindow* window, float x, float y) {

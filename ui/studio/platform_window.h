@@ -45,6 +45,8 @@ class PlatformWindow {
   WindowPlacement placement() const;
   // Paths dropped on the window since the last call.
   std::vector<std::filesystem::path> take_dropped_files();
+  // Files dropped on the window: what the window system's drop event delivers (and a script).
+  void drop(std::vector<std::filesystem::path> files);
 
  private:
   static void on_drop(GLFWwindow* window, int count, const char** paths);

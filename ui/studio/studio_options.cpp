@@ -20,6 +20,15 @@ std::optional<StudioOptions> parse_options(int argc, char** argv, int& exit_code
       ->check(CLI::ExistingFile);
   app.add_option("--workspace", workspace, "workspace to show: cam, study, vessel or fit")
       ->check(CLI::IsMember({"cam", "study", "vessel", "fit"}));
+  std::string script, state_dir;
+  app.add_option("--script", script,
+                 "run the actions of this file (open, drop, edit, undo, save-as, export, "
+                 "screenshot, numbers, …; see docs/studio.md), then exit — or take the screenshot "
+                 "or run the benchmark when asked as well")
+      ->check(CLI::ExistingFile);
+  app.add_option("--state-dir", state_dir,
+                 "keep the app's state (last project, recent files, window layout) in this folder "
+                 "instead of ~/.config/polarform-studio; headless runs keep it only when given");
   std::string screenshot;
   app.add_option("--screenshot", screenshot,
                  "render one frame after the computations settle to this PNG and exit");
@@ -37,6 +46,8 @@ std::optional<StudioOptions> parse_options(int argc, char** argv, int& exit_code
   if (!project.empty()) options.project = project;
   if (!workspace.empty()) options.workspace = parse_workspace(workspace);
   if (!screenshot.empty()) options.screenshot = screenshot;
+  if (!script.empty()) options.script = script;
+  if (!state_dir.empty()) options.state_dir = state_dir;
   if (!size.empty()) {
     std::smatch m;
     if (!std::regex_match(size, m, std::regex(R"((\d{2,5})x(\d{2,5}))"))) {

@@ -201,12 +201,10 @@ void StudyWorkspace::draw_plots(ImVec2 size) {
   draw_plot(deviation, x_views_[2], y_views_[2], ImVec2(size.x, height));
 }
 
-std::optional<ExportRequest> StudyWorkspace::draw_export_menu() {
-  if (ImGui::MenuItem("Study files (CSV, SVG, report.json) into a folder…", nullptr, false,
-                      result_.has_value()))
-    return ExportRequest{"study", "Export the study into a folder", "",
-                         cam_.document_name() + "-study"};
-  return std::nullopt;
+std::vector<ExportChoice> StudyWorkspace::export_choices() const {
+  return {{{"study", "Export the study into a folder", "", cam_.document_name() + "-study"},
+           "Study files (CSV, SVG, report.json) into a folder…",
+           result_.has_value(), ""}};
 }
 
 void StudyWorkspace::export_to(const ExportRequest&, const std::filesystem::path& folder) {

@@ -32,7 +32,7 @@ class StudyWorkspace : public Workspace {
   void draw() override;
   std::string document_name() const override { return cam_.document_name(); }
 
-  std::optional<ExportRequest> draw_export_menu() override;
+  std::vector<ExportChoice> export_choices() const override;
   void export_to(const ExportRequest& request, const std::filesystem::path& folder) override;
 
   std::string numbers() const override;

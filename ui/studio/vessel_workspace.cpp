@@ -9,6 +9,7 @@
 #include "export/iges_writer.h"
 #include "export/step_writer.h"
 #include "export/x3d_writer.h"
+#include "ui/jobs/vessel_outputs.h"
 #include "ui/studio/colors.h"
 #include "ui/studio/document_kind.h"
 #include "ui/studio/guarded.h"
@@ -194,23 +195,32 @@ void VesselWorkspace::rebuild_scene() {
   scene_.set_bounds(centred, false);
 }
 
-std::optional<ExportRequest> VesselWorkspace::draw_export_menu() {
+std::vector<ExportChoice> VesselWorkspace::export_choices() const {
   const bool ready = results_ && results_->surfaces;
   const std::string stem = document_.path().empty() ? "vessel" : document_.path().stem().string();
-  if (ImGui::MenuItem("Surfaces as IGES…", nullptr, false, ready))
-    return ExportRequest{"iges", "Export IGES", ".igs", stem + ".igs"};
-  if (ImGui::MenuItem("Surfaces as STEP…", nullptr, false, ready))
-    return ExportRequest{"step", "Export STEP", ".stp", stem + ".stp"};
-  if (ImGui::MenuItem("Surfaces as X3D…", nullptr, false, ready))
-    return ExportRequest{"x3d", "Export X3D", ".x3d", stem + ".x3d"};
-  if (!ready) ImGui::TextDisabled("(no converted surfaces yet)");
-  return std::nullopt;
+  const std::string needs = ready ? "" : "needs a solved and converted head";
+  return {{{"all", "Export all outputs into the folder", "", stem + "_outputs"},
+           "All outputs to a folder…",
+           ready,
+           "What `polarform vessel` writes: profile and head as IGES, STEP and DXF, the vessel "
+           "as a STEP shell, SVG plots, CSV samples, report.html and report.json"},
+          {{"iges", "Export IGES", ".igs", stem + ".igs"}, "Surfaces as IGES…", ready, needs, true},
+          {{"step", "Export STEP", ".stp", stem + ".stp"}, "Surfaces as STEP…", ready, needs},
+          {{"x3d", "Export X3D", ".x3d", stem + ".x3d"}, "Surfaces as X3D…", ready, needs}};
 }
 
 void VesselWorkspace::export_to(const ExportRequest& request, const std::filesystem::path& file) {
   if (!results_ || !results_->surfaces) return;
   const VesselSurfaces& s = *results_->surfaces;
   guarded(log(), "Export " + file.filename().string(), [&] {
+    if (request.tag == "all") {
+      VesselOutputOptions options;
+      options.design_name =
+          document_.path().empty() ? "vessel" : document_.path().stem().string();
+      const auto files = write_vessel_outputs(run_vessel_job(document_.current()), file, options);
+      log().info("Wrote " + std::to_string(files.size()) + " files into " + file.string());
+      return;
+    }
     if (request.tag == "iges") {
       IgesWriter w;
       w.add(s.head, "head");

@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "ui/studio/message_log.h"
 #include "ui/studio/workspace_kind.h"
@@ -23,6 +24,16 @@ struct ExportRequest {
   std::string title;      // dialog title
   std::string extension;  // ".igs"; empty: a directory-like name without extension
   std::string default_name;
+};
+
+// One item of File ▸ Export: the request it makes, its menu label, whether the results it needs
+// exist, and an optional tooltip; `separated` draws a separator above it.
+struct ExportChoice {
+  ExportRequest request;
+  std::string label;
+  bool enabled = true;
+  std::string tooltip;
+  bool separated = false;
 };
 
 struct StudioContext {
@@ -62,8 +73,9 @@ class Workspace {
   virtual void undo() {}
   virtual void redo() {}
 
-  // Menu items of File ▸ Export; a chosen item returns its request.
-  virtual std::optional<ExportRequest> draw_export_menu() { return std::nullopt; }
+  // The items of File ▸ Export (also what `export TAG PATH` of a --script can name); a chosen
+  // item's path arrives in export_to().
+  virtual std::vector<ExportChoice> export_choices() const { return {}; }
   virtual void export_to(const ExportRequest&, const std::filesystem::path&) {}
 
   // Headless modes: the scripted edit of benchmark frame `frame` of `frames`, and the key numbers

@@ -1,18 +1,22 @@
 // polarform-studio end to end under Xvfb + Mesa: every workspace renders a settled frame that is
 // not blank (pixel statistics of the PNG), a scripted edit (--bench-frames) changes the numbers
-// the app reports, and bad input — a broken project, an infeasible design — is reported while the
-// app keeps running. Skips with a message when xvfb-run or the studio binary is missing.
+// the app reports, scripts (--script) drive undo/redo, save as, every export, drag-and-drop and
+// the state kept between runs, and bad input — a broken project, an infeasible design, a bad
+// script — is reported while the app keeps running. Skips with a message when xvfb-run or the
+// studio binary is missing.
 #include <gtest/gtest.h>
 
 #define STB_IMAGE_IMPLEMENTATION
 #include <stb/stb_image.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <numbers>
 #include <random>
@@ -20,6 +24,11 @@
 #include <sstream>
 #include <string>
 #include <thread>
+
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+
+#include "export/project/cam_project.h"
 
 namespace {
 
@@ -173,6 +182,38 @@ class StudioTest : public ::testing::Test {
   fs::path dir_;
 };
 
+// The text of a file.
+std::string slurp(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Control points of the first rational B-spline curve (entity 126) of an IGES file: its first
+// parameter K is the upper index of the control points.
+int iges_curve_control_points(const fs::path& igs) {
+  const std::string text = slurp(igs);
+  const auto at = text.find("\n126,");
+  if (at == std::string::npos) return -1;
+  return std::stoi(text.substr(at + 5)) + 1;
+}
+
+// The columns of a CSV file with one header line.
+std::vector<std::vector<double>> csv_columns(const fs::path& csv) {
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::vector<double>> columns;
+  while (std::getline(in, line)) {
+    std::istringstream row(line);
+    std::string cell;
+    for (std::size_t k = 0; std::getline(row, cell, ','); ++k) {
+      if (columns.size() <= k) columns.emplace_back();
+      columns[k].push_back(std::stod(cell));
+    }
+  }
+  return columns;
+}
+
 TEST_F(StudioTest, CamWorkspaceRendersAndMeetsItsTolerance) {
   const StudioRun r = screenshot(kExamples / "cams" / "roller.xml", "cam");
   const auto n = numbers(r.output);
@@ -295,6 +336,170 @@ TEST_F(StudioTest, InfeasibleDesignIsReportedAndTheSessionGoesOn) {
   EXPECT_GE(error_count(r.output), 1) << r.output;
   EXPECT_EQ(number(numbers(r.output), "valid"), 0) << r.output;
   EXPECT_GT(pixel_stats(png).colours, 50u);
+}
+
+// A --script drives the cam workspace through the code of its menus: an edit, undo and redo give
+// back exactly the numbers they should, Save as writes the edited project, and every item of
+// File ▸ Export writes a file whose numbers match what the app reports.
+TEST_F(StudioTest, ScriptEditsUndoesSavesAndExportsTheCam) {
+  const fs::path script = write("session.txt", R"(numbers before
+edit
+numbers edited
+undo
+numbers undone
+redo
+numbers redone
+save-as "saved cam.xml"
+export iges out.igs
+export step out.stp
+export dxf out.dxf
+export x3d out.x3d
+export csv out.csv
+export all all
+)");
+  const StudioRun r = run_studio("--project '" + (kExamples / "cams" / "roller.xml").string() +
+                                 "' --script '" + script.string() + "' --size 1280x800");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(error_count(r.output), 0) << r.output;
+  const auto before = numbers(r.output, "before:"), edited = numbers(r.output, "edited:");
+  const auto undone = numbers(r.output, "undone:"), redone = numbers(r.output, "redone:");
+  // The scripted edit drags the end of the first segment from 90° back to 45°.
+  EXPECT_EQ(number(before, "boundary_1_deg"), 90);
+  EXPECT_EQ(number(edited, "boundary_1_deg"), 45);
+  for (const char* key : {"boundary_1_deg", "max_pressure_angle_deg", "control_points",
+                          "max_radial_error_mm"}) {
+    EXPECT_EQ(undone.at(key), before.at(key)) << key;
+    EXPECT_EQ(redone.at(key), edited.at(key)) << key;
+  }
+  EXPECT_NE(edited.at("max_pressure_angle_deg"), before.at("max_pressure_angle_deg"));
+
+  // Save as: the edited design, read back.
+  std::vector<std::string> warnings;
+  const polarform::CamProject saved = polarform::read_cam_project(dir_ / "saved cam.xml", warnings);
+  ASSERT_EQ(saved.cam.segments.size(), 4u);
+  EXPECT_NEAR(saved.cam.segments[1].start, std::numbers::pi / 4, 1e-12);
+  EXPECT_NEAR(saved.cam.segments[0].end, std::numbers::pi / 4, 1e-12);
+
+  // The exports: the NURBS profile the app measured, in every format.
+  const double control_points = number(redone, "control_points");
+  EXPECT_EQ(iges_curve_control_points(dir_ / "out.igs"), control_points);
+  EXPECT_EQ(slurp(dir_ / "out.stp").rfind("ISO-10303-21;", 0), 0u);
+  EXPECT_NE(slurp(dir_ / "out.stp").find("B_SPLINE_CURVE_WITH_KNOTS"), std::string::npos);
+  EXPECT_NE(slurp(dir_ / "out.dxf").find("SPLINE"), std::string::npos);
+  EXPECT_NE(slurp(dir_ / "out.x3d").find("<X3D"), std::string::npos);
+  const auto svaj = csv_columns(dir_ / "out.csv");
+  ASSERT_EQ(svaj.size(), 6u);
+  EXPECT_NEAR(*std::max_element(svaj[1].begin(), svaj[1].end()), 20.0, 1e-9);  // the stroke
+  double pressure = 0;
+  for (double p : svaj[5]) pressure = std::max(pressure, std::abs(p));
+  EXPECT_LE(pressure, number(redone, "max_pressure_angle_deg") + 1e-9);
+  EXPECT_GT(pressure, number(redone, "max_pressure_angle_deg") - 0.5);  // 0.5° sampling
+  // All outputs: what `polarform cam` writes, its report agreeing with the app.
+  const auto report = nlohmann::json::parse(slurp(dir_ / "all" / "report.json"));
+  EXPECT_EQ(report["control_points"].get<double>(), control_points);
+  EXPECT_NEAR(report["max_radial_error_mm"].get<double>(), number(redone, "max_radial_error_mm"),
+              1e-12);
+  for (const char* file : {"profile.igs", "profile.stp", "profile.dxf", "profile.x3d",
+                           "svaj.csv", "svaj.svg", "report.html"})
+    EXPECT_TRUE(fs::exists(dir_ / "all" / file)) << file;
+}
+
+// Files dropped on the window open in the workspace they belong to; a broken one is a message and
+// the session goes on with the document it had. The fit's outputs are exported from the studio.
+TEST_F(StudioTest, ScriptDropsFilesOnTheWindow) {
+  std::ostringstream cloud;
+  std::mt19937 rng(3);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  for (int i = 0; i < 4000; ++i) {
+    Eigen::Vector3d p(gauss(rng), gauss(rng), gauss(rng));
+    p = 25.0 * p.normalized();
+    cloud << p.x() << ' ' << p.y() << ' ' << 0.9 * p.z() << '\n';
+  }
+  const fs::path scan = write("dropped.xyz", cloud.str());
+  const fs::path broken = write("broken.xml", "<polarform version=\"1\"><cam");
+  const fs::path script = write("drop.txt", "drop dropped.xyz\nnumbers dropped\n"
+                                            "drop broken.xml\nnumbers after\n"
+                                            "export all fit_outputs\n");
+  const StudioRun r = run_studio("--project '" + (kExamples / "cams" / "roller.xml").string() +
+                                 "' --script '" + script.string() + "' --size 1280x800");
+  EXPECT_EQ(r.status, 1) << "the broken file is a failed action: " << r.output;
+  EXPECT_EQ(error_count(r.output), 1) << r.output;
+  EXPECT_NE(r.output.find("broken.xml"), std::string::npos) << r.output;
+  const auto dropped = numbers(r.output, "dropped:"), after = numbers(r.output, "after:");
+  EXPECT_EQ(number(dropped, "points"), 4000);  // the fit workspace took the cloud
+  EXPECT_EQ(number(dropped, "fitted"), 1);
+  EXPECT_LT(number(dropped, "rms_mm"), 1e-2);  // a noise-free ellipsoid
+  EXPECT_EQ(after, dropped) << "the broken file changed the fit workspace";
+  const auto report = nlohmann::json::parse(slurp(dir_ / "fit_outputs" / "report.json"));
+  EXPECT_NEAR(report["error_mm"]["rms"].get<double>(), number(dropped, "rms_mm"), 1e-9)
+      << report.dump(1);
+  EXPECT_TRUE(fs::exists(dir_ / "fit_outputs" / "surface.igs"));
+  EXPECT_TRUE(fs::exists(dir_ / "fit_outputs" / "deviation.ply"));
+}
+
+// The vessel workspace from a template: an edit re-solves the head, undo brings back the numbers
+// bit for bit, and All outputs writes what `polarform vessel` writes.
+TEST_F(StudioTest, ScriptDrivesTheVesselWorkspace) {
+  const fs::path script = write("vessel.txt", R"(template vessel torispherical_100_6
+numbers solved
+edit
+numbers edited
+undo
+numbers undone
+export all vessel_outputs
+save
+)");
+  const StudioRun r = run_studio("--script '" + script.string() + "' --size 1280x800");
+  EXPECT_EQ(r.status, 1) << r.output;  // the last line: a template has no file to save to
+  EXPECT_EQ(error_count(r.output), 1) << r.output;
+  EXPECT_NE(r.output.find("has no file yet: use save-as PATH"), std::string::npos) << r.output;
+  const auto solved = numbers(r.output, "solved:"), edited = numbers(r.output, "edited:");
+  const auto undone = numbers(r.output, "undone:");
+  EXPECT_NEAR(number(edited, "pressure_mpa") / number(solved, "pressure_mpa"), 1.5, 1e-12);
+  EXPECT_EQ(undone.at("pressure_mpa"), solved.at("pressure_mpa"));
+  EXPECT_EQ(undone.at("max_hoop_stress_mpa"), solved.at("max_hoop_stress_mpa"));
+  for (const char* file : {"profile.igs", "head.stp", "vessel.stp", "stress.svg", "report.json"})
+    EXPECT_TRUE(fs::exists(dir_ / "vessel_outputs" / file)) << file;
+}
+
+// The last project, the workspace and the layout survive a restart (--state-dir keeps the state
+// of headless runs, as ~/.config/polarform-studio keeps the desktop's).
+TEST_F(StudioTest, StateIsKeptBetweenRuns) {
+  const fs::path state = dir_ / "state";
+  fs::create_directories(state);
+  write("state/state.ini", "layout.cam.left=0.42\n");
+  const fs::path first = write("first.txt", "edit\nsave-as edited.xml\nworkspace study\n");
+  const StudioRun r1 = run_studio("--project '" + (kExamples / "cams" / "roller.xml").string() +
+                                  "' --script '" + first.string() + "' --state-dir '" +
+                                  state.string() + "' --size 1280x800");
+  ASSERT_EQ(r1.status, 0) << r1.output;
+  const std::string ini = slurp(state / "state.ini");
+  EXPECT_NE(ini.find("last_project=" + (dir_ / "edited.xml").string()), std::string::npos) << ini;
+  EXPECT_NE(ini.find("workspace=study"), std::string::npos) << ini;
+  EXPECT_NE(ini.find("layout.cam.left=0.42\n"), std::string::npos) << ini;
+  EXPECT_TRUE(fs::exists(state / "imgui.ini"));
+
+  // No project on the command line: the edited one comes back, in the study workspace.
+  const fs::path second = write("second.txt", "numbers restored\nworkspace cam\nnumbers cam\n");
+  const StudioRun r2 = run_studio("--script '" + second.string() + "' --state-dir '" +
+                                  state.string() + "' --size 1280x800");
+  ASSERT_EQ(r2.status, 0) << r2.output;
+  EXPECT_EQ(number(numbers(r2.output, "restored:"), "studied"), 1) << r2.output;
+  EXPECT_EQ(number(numbers(r2.output, "cam:"), "boundary_1_deg"), 45) << r2.output;
+  EXPECT_NE(slurp(state / "state.ini").find("layout.cam.left=0.42"), std::string::npos);
+}
+
+// A script that does not parse is refused as a whole, naming its file and line: exit code 2 and
+// nothing of it done.
+TEST_F(StudioTest, BadScriptIsRefusedBeforeAnythingRuns) {
+  const fs::path script = write("bad.txt", "save-as first.xml\nexport iges\n");
+  const StudioRun r = run_studio("--project '" + (kExamples / "cams" / "roller.xml").string() +
+                                 "' --script '" + script.string() + "' --size 1280x800");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find(script.string() + ":2: export takes 2 argument(s), got 1"),
+            std::string::npos)
+      << r.output;
+  EXPECT_FALSE(fs::exists(dir_ / "first.xml"));
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 // Command-line options of polarform-studio: the defaults, every option read back, and bad values
-// of --size, --workspace, --bench-frames and --project refused with exit code 2 and a message
-// naming the option.
+// of --size, --workspace, --bench-frames, --project and --script refused with exit code 2 and a
+// message naming the option.
 #include "ui/studio/studio_options.h"
 
 #include <gmock/gmock.h>
@@ -57,6 +57,20 @@ TEST(StudioOptions, ReadsEveryOption) {
   EXPECT_EQ(p.options->height, 600);
   EXPECT_TRUE(p.options->size_given);
   EXPECT_TRUE(p.options->headless());
+}
+
+TEST(StudioOptions, ScriptAndStateDirectory) {
+  // A script alone is headless; the state folder need not exist yet (the app creates it).
+  const Parsed p = parse({"--script", kRoller, "--state-dir", "/tmp/polarform-state-not-yet"});
+  ASSERT_TRUE(p.options) << p.errors;
+  EXPECT_EQ(p.options->script, kRoller);
+  EXPECT_EQ(p.options->state_dir, "/tmp/polarform-state-not-yet");
+  EXPECT_TRUE(p.options->headless());
+  EXPECT_FALSE(p.options->screenshot);
+  const Parsed missing = parse({"--script", "/no/such/script.txt"});
+  EXPECT_FALSE(missing.options);
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_THAT(missing.errors, testing::HasSubstr("/no/such/script.txt"));
 }
 
 TEST(StudioOptions, AcceptsTheSizeLimits) {
