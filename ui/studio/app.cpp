@@ -222,7 +222,7 @@ void App::run_action(const ScriptAction& action) {
         log_.error(where + "the " + args[0] + " workspace is not part of this build");
       break;
     case ScriptVerb::edit:
-      active().bench_step(0, 1);
+      active().scripted_edit();
       break;
     case ScriptVerb::undo:
       if (active().can_undo())

@@ -8,6 +8,29 @@
 #include "ui/studio/widgets.h"
 
 namespace polarform::studio {
+namespace {
+
+// A checkbox that sets or clears `value` (starting from `fallback`) and, when set, its three
+// coordinates; true when either changed.
+bool optional_vector(const char* label, std::optional<Eigen::Vector3d>& value,
+                     const Eigen::Vector3d& fallback) {
+  bool on = value.has_value();
+  ImGui::PushID(label);
+  bool changed = ImGui::Checkbox("##on", &on);
+  if (changed) value = on ? std::optional<Eigen::Vector3d>(fallback) : std::nullopt;
+  ImGui::SameLine();
+  if (value) {
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 12);
+    changed |= ImGui::InputScalarN(label, ImGuiDataType_Double, value->data(), 3, nullptr, nullptr,
+                                   "%.4g");
+  } else {
+    ImGui::TextDisabled("%s: estimated", label);
+  }
+  ImGui::PopID();
+  return changed;
+}
+
+}  // namespace
 
 bool draw_fit_options(FitSettings& s) {
   bool changed = false;
@@ -45,6 +68,12 @@ bool draw_fit_options(FitSettings& s) {
                                                              "G1 point", "cap surface"};
   changed |= combo("poles (spherical)", s.pole, kPoles);
   ImGui::PopItemWidth();
+  changed |= optional_vector("frame origin [mm]", s.center, Eigen::Vector3d::Zero());
+  changed |= optional_vector("frame axis k", s.axis, Eigen::Vector3d::UnitZ());
+  help_marker(
+      "Unchecked, the frame is estimated from the cloud (general quadric fit, Bae 2002, §4.3). "
+      "Checked, the given origin and axis are used instead, as --center and --axis of "
+      "polarform fit.");
   return changed;
 }
 

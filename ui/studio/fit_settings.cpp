@@ -27,6 +27,8 @@ RotationalFitOptions to_fit_options(const FitSettings& s, int threads) {
   o.spherical.base_kind = o.cylindrical.base_kind = base;
   o.spherical.closure = o.cylindrical.closure = static_cast<Closure>(s.closure);
   o.spherical.north = o.spherical.south = static_cast<PoleTreatment>(s.pole);
+  o.spherical.frame.origin = o.cylindrical.frame.origin = s.center;
+  o.spherical.frame.axis = o.cylindrical.frame.axis = s.axis;
   if (s.method == 1) o.method = FitMethod::spherical;
   if (s.method == 2) o.method = FitMethod::cylindrical;
   return o;
@@ -46,9 +48,9 @@ FitSettings fit_settings(const FitProject& p, std::vector<std::string>& ignored)
   s.use_tolerance = p.tolerance.has_value();
   if (p.tolerance) s.tolerance = *p.tolerance;
   s.measure = static_cast<int>(p.measure);
-  if (p.center) ignored.push_back("center (the studio estimates the frame)");
-  if (p.axis) ignored.push_back("axis (the studio estimates the frame)");
-  if (p.skip_bad) ignored.push_back("skip-bad (the studio reads every record)");
+  s.center = p.center;
+  s.axis = p.axis;
+  s.skip_bad = p.skip_bad;
   return s;
 }
 
@@ -67,6 +69,9 @@ FitProject fit_project(const FitSettings& s, const std::filesystem::path& scan) 
   else
     p.ctrl = std::make_pair(s.size_u, s.size_v);
   p.measure = static_cast<ToleranceMeasure>(s.measure);
+  p.center = s.center;
+  p.axis = s.axis;
+  p.skip_bad = s.skip_bad;
   return p;
 }
 

@@ -1,10 +1,14 @@
 // The surface-fit options of the fit workspace — method (automatic from the quadric, spherical,
-// cylindrical), degrees, a tolerance or a fixed control net, fairness, base arcs, closure and pole
-// treatment — their translation into the fitter's RotationalFitOptions, and their exchange with
-// fit project files (export/project/fit_project.h).
+// cylindrical), degrees, a tolerance or a fixed control net, fairness, base arcs, closure, pole
+// treatment and an optional frame origin and axis instead of the estimated ones — their
+// translation into the fitter's RotationalFitOptions, and their exchange with fit project files
+// (export/project/fit_project.h).
 #pragma once
 
+#include <Eigen/Core>
+
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +31,9 @@ struct FitSettings {
   bool quartic_base = false;
   int closure = 0;  // Closure
   int pole = 0;     // PoleTreatment (spherical), both poles
+  // The local frame's origin and axis k, mm; unset: estimated from the cloud (Bae 2002, §4.3).
+  std::optional<Eigen::Vector3d> center, axis;
+  bool skip_bad = true;  // the studio always skips bad records (and says how many); kept for files
 
   bool operator==(const FitSettings&) const = default;
 };
@@ -34,7 +41,7 @@ struct FitSettings {
 RotationalFitOptions to_fit_options(const FitSettings& settings, int threads);
 
 // The settings a fit project asks for; `ignored` gets a note for each project field the studio's
-// surface fit does not use (polar method, centre/axis overrides, skip-bad).
+// surface fit does not use (the polar method).
 FitSettings fit_settings(const FitProject& project, std::vector<std::string>& ignored);
 
 // The fit project for these settings and this scan path (fairness and base arcs are not part of

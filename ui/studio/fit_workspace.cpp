@@ -2,6 +2,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <numbers>
@@ -80,6 +81,7 @@ bool FitWorkspace::save(const std::filesystem::path& file) {
       }))
     return false;
   project_path_ = file;
+  saved_settings_ = settings_;
   log().info("Saved " + file.string());
   return true;
 }
@@ -103,6 +105,8 @@ bool FitWorkspace::open(const std::filesystem::path& file, bool) {
     cloud = scan_path(project, file);
     project_path_ = file;
   }
+  saved_settings_ = settings_;
+  history_.reset(settings_);
   fit_task_.cancel();
   loading_ = cloud;
   load_task_.start([cloud](TaskControl& control) { return load_cloud(cloud, control); });
@@ -212,6 +216,7 @@ void FitWorkspace::draw() {
   draw_controls();
   draw_report();
   ImGui::EndChild();
+  history_.settle(settings_, ImGui::IsAnyItemActive());
   ImGui::SameLine(0, 0);
   vertical_splitter("fit split", left_fraction, avail.x);
   ImGui::SameLine(0, 0);
@@ -407,9 +412,22 @@ void FitWorkspace::bench_step(int, int frames) {
   scene_.turn(2.0f * std::numbers::pi_v<float> / static_cast<float>(frames));
 }
 
+void FitWorkspace::scripted_edit() {
+  settings_.use_tolerance = false;
+  settings_.size_u = std::max(4, settings_.size_u - 4);
+  settings_.size_v = std::max(4, settings_.size_v - 4);
+  history_.settle(settings_, false);
+  start_fit();
+}
+
 std::string FitWorkspace::numbers() const {
   std::ostringstream out;
   out << "points=" << (cloud_ ? cloud_->points.cols() : 0) << "\n";
+  out << "net_setting="
+      << (settings_.use_tolerance ? "tolerance"
+                                  : std::to_string(settings_.size_u) + "x" +
+                                        std::to_string(settings_.size_v))
+      << "\n";
   if (cloud_ && cloud_->frame && cloud_->frame->quadric)
     out << "quadric=" << to_string(cloud_->frame->quadric->classification.type) << "\n";
   out << "fitted=" << (fit_ ? 1 : 0) << "\n";

@@ -14,6 +14,7 @@
 #include "ui/studio/background_task.h"
 #include "ui/studio/fit_options_panel.h"
 #include "ui/studio/scene_view.h"
+#include "ui/studio/undo_history.h"
 #include "ui/studio/workspace.h"
 
 namespace polarform::studio {
@@ -53,11 +54,20 @@ class FitWorkspace : public Workspace {
   bool can_save() const override { return cloud_ != nullptr; }
   // Writes a fit project: the current options and the cloud's path relative to `file`.
   bool save(const std::filesystem::path& file) override;
+  // The options are the document: edited since opened or saved, and undone step by step (the
+  // shown fit stays until the next fit).
+  bool dirty() const override { return cloud_ && !(settings_ == saved_settings_); }
+  bool can_undo() const override { return history_.can_undo(settings_); }
+  bool can_redo() const override { return history_.can_redo(); }
+  void undo() override { settings_ = history_.undo(settings_); }
+  void redo() override { settings_ = history_.redo(settings_); }
 
   std::vector<ExportChoice> export_choices() const override;
   void export_to(const ExportRequest& request, const std::filesystem::path& file) override;
 
   void bench_step(int frame, int frames) override;
+  // A coarser net (4 fewer control values each way, at least 4) and a new fit.
+  void scripted_edit() override;
   std::string numbers() const override;
 
  private:
@@ -74,7 +84,8 @@ class FitWorkspace : public Workspace {
   BackgroundTask<FitRun> fit_task_;
   std::shared_ptr<const LoadedCloud> cloud_;
   std::optional<FitRun> fit_;
-  FitSettings settings_;
+  FitSettings settings_, saved_settings_;
+  UndoHistory<FitSettings> history_;
   std::filesystem::path loading_;
   std::filesystem::path project_path_;
   std::string fit_error_;

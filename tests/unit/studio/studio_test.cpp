@@ -29,6 +29,7 @@
 #include <nlohmann/json.hpp>
 
 #include "export/project/cam_project.h"
+#include "export/project/fit_project.h"
 
 namespace {
 
@@ -500,6 +501,38 @@ TEST_F(StudioTest, BadScriptIsRefusedBeforeAnythingRuns) {
             std::string::npos)
       << r.output;
   EXPECT_FALSE(fs::exists(dir_ / "first.xml"));
+}
+
+// The fit workspace's options are its document: an edit (a coarser net) fits again, undo restores
+// the options (the fit shown stays until the next fit), and Save as writes them with the frame
+// origin the project set.
+TEST_F(StudioTest, ScriptEditsUndoesAndSavesAFitProject) {
+  const fs::path project = write("fit.xml", R"(<polarform version="1">
+  <fit scan=")" + (kExamples / "scans" / "sphere_like.xyz").string() +
+                                                R"(" method="spherical" closed="yes" pole="g1"
+       degree="3,3" ctrl="12,24" center="0.01,0,0"/>
+</polarform>
+)");
+  const fs::path script = write("fit.txt", "numbers opened\nedit\nnumbers edited\nundo\n"
+                                           "numbers undone\nsave-as saved_fit.xml\n");
+  const StudioRun r = run_studio("--project '" + project.string() + "' --script '" +
+                                 script.string() + "' --size 1280x800");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(error_count(r.output), 0) << r.output;
+  const auto opened = numbers(r.output, "opened:"), edited = numbers(r.output, "edited:");
+  const auto undone = numbers(r.output, "undone:");
+  EXPECT_EQ(opened.at("net_setting"), "12x24");
+  EXPECT_EQ(opened.at("control_points"), "35x81");  // bicubic 12 x 24 times the RQB sphere
+  EXPECT_EQ(edited.at("net_setting"), "8x20");
+  EXPECT_EQ(edited.at("control_points"), "23x69");  // 3n − 1 along φ, 3n + 9 around θ
+  EXPECT_GT(number(edited, "rms_mm"), number(opened, "rms_mm"));  // a coarser net fits worse
+  EXPECT_EQ(undone.at("net_setting"), "12x24");
+  std::vector<std::string> warnings;
+  const polarform::FitProject saved = polarform::read_fit_project(dir_ / "saved_fit.xml", warnings);
+  EXPECT_EQ(saved.ctrl, std::make_pair(12, 24));
+  ASSERT_TRUE(saved.center);
+  EXPECT_EQ(*saved.center, Eigen::Vector3d(0.01, 0, 0));
+  EXPECT_EQ(saved.pole, polarform::PoleTreatment::g1);
 }
 
 }  // namespace

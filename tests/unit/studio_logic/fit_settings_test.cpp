@@ -1,6 +1,7 @@
 // The fit workspace's settings and fit project files: what the project format holds survives
-// settings → project → XML → project → settings exactly; fields the studio does not use are
-// named; the settings become the fitter's options (method, net or tolerance, closure, poles).
+// settings → project → XML → project → settings exactly (frame overrides included); the polar
+// method, which the studio does not fit, is named; the settings become the fitter's options
+// (method, net or tolerance, closure, poles, frame).
 #include <gtest/gtest.h>
 
 #include "ui/studio/fit_settings.h"
@@ -36,21 +37,27 @@ TEST(FitSettings, ProjectFieldsRoundTrip) {
   EXPECT_EQ(round_trip(FitSettings{}), FitSettings{});
 }
 
-TEST(FitSettings, FieldsTheStudioDoesNotUseAreNamed) {
+TEST(FitSettings, FrameOverridesAndSkipBadRoundTrip) {
+  FitSettings s;
+  s.center = Eigen::Vector3d(1.5, -2, 3.25);
+  s.axis = Eigen::Vector3d(0, 0.6, 0.8);
+  s.skip_bad = false;
+  EXPECT_EQ(round_trip(s), s);
+}
+
+TEST(FitSettings, ThePolarMethodIsNamedAsNotUsed) {
   FitProject p;
   p.scan = "a.xyz";
   p.method = FitJobMethod::polar;
   p.center = Eigen::Vector3d(1, 2, 3);
   p.axis = Eigen::Vector3d(0, 0, 1);
-  p.skip_bad = true;
   std::vector<std::string> ignored;
   const FitSettings s = fit_settings(p, ignored);
   EXPECT_EQ(s.method, 0);
-  ASSERT_EQ(ignored.size(), 4u);
+  ASSERT_EQ(ignored.size(), 1u);
   EXPECT_NE(ignored[0].find("polar"), std::string::npos);
-  EXPECT_NE(ignored[1].find("center"), std::string::npos);
-  EXPECT_NE(ignored[2].find("axis"), std::string::npos);
-  EXPECT_NE(ignored[3].find("skip-bad"), std::string::npos);
+  EXPECT_EQ(s.center, p.center);
+  EXPECT_EQ(s.axis, p.axis);
 }
 
 TEST(FitSettings, BecomeTheFittersOptions) {
@@ -66,6 +73,15 @@ TEST(FitSettings, BecomeTheFittersOptions) {
   EXPECT_EQ(o.spherical.north, PoleTreatment::g1);
   EXPECT_EQ(o.spherical.south, PoleTreatment::g1);
   EXPECT_EQ(o.spherical.function.threads, 3);
+  EXPECT_FALSE(o.spherical.frame.origin);  // estimated
+  EXPECT_FALSE(o.cylindrical.frame.axis);
+  s.center = Eigen::Vector3d(4, 5, 6);
+  s.axis = Eigen::Vector3d(1, 0, 0);
+  o = to_fit_options(s, 3);
+  EXPECT_EQ(o.spherical.frame.origin, s.center);
+  EXPECT_EQ(o.cylindrical.frame.origin, s.center);
+  EXPECT_EQ(o.spherical.frame.axis, s.axis);
+  EXPECT_EQ(o.cylindrical.frame.axis, s.axis);
   s.use_tolerance = true;
   s.tolerance = 0.2;
   o = to_fit_options(s, 1);
