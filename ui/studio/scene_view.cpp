@@ -93,7 +93,9 @@ void SceneView::draw(ImVec2 size) {
   Rendered wanted;
   wanted.width = static_cast<int>(size.x * io.DisplayFramebufferScale.x);
   wanted.height = static_cast<int>(size.y * io.DisplayFramebufferScale.y);
-  wanted.point_budget = moved_ ? kMovingPointBudget : std::numeric_limits<int>::max();
+  if (moved_)
+    moving_budget_.adapt(io.DeltaTime, layers_[static_cast<int>(SceneLayer::cloud)].count());
+  wanted.point_budget = moved_ ? moving_budget_.points() : std::numeric_limits<int>::max();
   wanted.visible = visible_;
   wanted.point_size = point_size;
   if (moved_ || changed_ || !(wanted == rendered_)) {

@@ -3,7 +3,7 @@
 // camera, shown as an image with an axis triad. Mouse: drag orbits, right- or shift-drag pans,
 // wheel zooms, double-click fits the view to the content. The image is rendered again only when
 // the camera, the layers or the size change; while the camera moves, large clouds are drawn as a
-// uniform subset of kMovingPointBudget points, and in full once it stops.
+// uniform subset whose size adapts to the frame time (PointBudget), and in full once it stops.
 #pragma once
 
 #include <imgui.h>
@@ -13,6 +13,7 @@
 
 #include "ui/studio/gpu_layer.h"
 #include "ui/studio/orbit_camera.h"
+#include "ui/studio/point_budget.h"
 #include "ui/studio/render_target.h"
 
 namespace polarform::studio {
@@ -25,8 +26,6 @@ class SceneView {
  public:
   SceneView();
   ~SceneView();
-
-  static constexpr int kMovingPointBudget = 100000;
 
   // A layer to upload to or clear (the view renders again).
   GpuLayer& layer(SceneLayer which) {
@@ -67,6 +66,7 @@ class SceneView {
     bool operator==(const Rendered&) const = default;
   } rendered_;
   std::unique_ptr<GlShader> flat_, lit_;
+  PointBudget moving_budget_;
 };
 
 }  // namespace polarform::studio
