@@ -16,7 +16,7 @@ std::optional<StudioOptions> parse_options(int argc, char** argv, int& exit_code
       "polarform-studio - the desktop app of polarform: design cams and vessel heads, fit scans"};
   std::string project, workspace, size;
   app.add_option("--project", project,
-                 "cam or vessel project (XML), or a point cloud for the fit workspace")
+                 "a cam, vessel or fit project (XML), or a point cloud for the fit workspace")
       ->check(CLI::ExistingFile);
   app.add_option("--workspace", workspace, "workspace to show: cam, study, vessel or fit")
       ->check(CLI::IsMember({"cam", "study", "vessel", "fit"}));

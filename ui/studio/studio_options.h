@@ -1,4 +1,4 @@
-// The command line of polarform-studio: an optional project (a cam or vessel project XML, or a
+// The command line of polarform-studio: an optional project (a cam, vessel or fit project XML, or a
 // point cloud for the fit workspace) and workspace, and the headless modes — run a script of
 // actions (--script, see studio_script.h), render one settled frame to a PNG (--screenshot), or
 // N frames under scripted edits with frame-time statistics (--bench-frames) — at a given window
