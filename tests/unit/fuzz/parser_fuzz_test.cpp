@@ -1,6 +1,6 @@
 // Bounded mutation fuzzing of every parser polarform owns: point clouds (xyz/csv, PLY ascii and
 // binary in both byte orders, STL ascii and binary, OBJ, OFF) and the cam, vessel and fit
-// project files. Each valid seed is mutated (byte flips, deletions, duplications, insertions of
+// project files, and the studio's --script (when the studio is built). Each valid seed is mutated (byte flips, deletions, duplications, insertions of
 // number-breaking tokens, truncation) with a fixed seed; every mutant must either parse into a
 // valid result or throw InputError — no other exception, no crash (run `make asan` for memory
 // errors). POLARFORM_FUZZ_ITERATIONS scales the run (default 10000 mutants per seed).
@@ -24,6 +24,9 @@
 #include "export/project/vessel_project.h"
 #include "src/error.h"
 #include "src/io/point_cloud.h"
+#ifdef POLARFORM_HAVE_STUDIO_LOGIC
+#include "ui/studio/studio_script.h"
+#endif
 
 namespace polarform {
 namespace {
@@ -214,6 +217,21 @@ TEST(ParserFuzz, FitProjectReaderAcceptsOrRejectsCleanly) {
        },
        300, iterations());
 }
+
+#ifdef POLARFORM_HAVE_STUDIO_LOGIC
+TEST(ParserFuzz, StudioScriptParserAcceptsOrRejectsCleanly) {
+  const std::string seed =
+      "# a session\nopen cams/roller.xml\ndrop a.xyz \"b c.ply\"\ntemplate vessel hemispherical\n"
+      "workspace fit\nedit\nundo\nredo\nsave\nsave-as \"out/my cam.xml\"\n"
+      "export all out\nscreenshot shot.png\nnumbers after\n";
+  fuzz(seed,
+       [](const std::string& text) {
+         std::istringstream in(text);
+         studio::parse_script(in, "/fuzz/script.txt");
+       },
+       400, iterations());
+}
+#endif
 
 }  // namespace
 }  // namespace polarform
