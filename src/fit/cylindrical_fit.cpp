@@ -12,16 +12,12 @@ namespace polarform {
 // Bae 2002, §3.2 with §3.3.1 and §4.3.
 CylindricalFit fit_cylindrical(const Eigen::Matrix3Xd& points, const CylindricalFitOptions& opt) {
   StageClock total, clock;
-  if (points.cols() < 16) throw InputError("cylindrical fit: " + std::to_string(points.cols()) +
-                                           " points, expected at least 16");
-  if (!points.allFinite()) throw InputError("cylindrical fit: a point is not finite");
   const int threads = opt.function.threads;
   ProgressRange progress(opt.function.progress, 0.0, 1.0);
   StageTimes times;
-  FrameOptions fopt = opt.frame;
-  fopt.quadric.threads = threads;
-  FrameEstimate frame = estimate_frame(points, fopt);
-  const Eigen::Matrix3Xd local = frame.frame.to_local(points);
+  LocalCloud cloud = local_cloud(points, opt.frame, threads, "cylindrical fit");
+  FrameEstimate& frame = cloud.frame;
+  const Eigen::Matrix3Xd& local = cloud.points;
   times.frame = clock.lap();
   progress(0.05);
 

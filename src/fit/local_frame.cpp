@@ -159,4 +159,16 @@ FrameEstimate estimate_frame(const Eigen::Matrix3Xd& points, const FrameOptions&
   return out;
 }
 
+LocalCloud local_cloud(const Eigen::Matrix3Xd& points, FrameOptions options, int threads,
+                       const std::string& fit_name) {
+  if (points.cols() < 16)
+    throw InputError(fit_name + ": " + std::to_string(points.cols()) +
+                     " points, expected at least 16");
+  if (!points.allFinite()) throw InputError(fit_name + ": a point is not finite");
+  options.quadric.threads = threads;
+  LocalCloud out{estimate_frame(points, options), {}};
+  out.points = out.frame.frame.to_local(points);
+  return out;
+}
+
 }  // namespace polarform

@@ -56,4 +56,14 @@ struct FrameEstimate {
 // the user did not give origin and axis.
 FrameEstimate estimate_frame(const Eigen::Matrix3Xd& points, const FrameOptions& options = {});
 
+// The start of the surface fits (Bae 2002, §4.3): at least 16 finite points, their frame
+// estimated with `threads` quadric threads, and the points in that frame. InputError messages
+// begin with `fit_name` ("spherical fit: 9 points, expected at least 16").
+struct LocalCloud {
+  FrameEstimate frame;
+  Eigen::Matrix3Xd points;  // frame.frame.to_local of the input
+};
+LocalCloud local_cloud(const Eigen::Matrix3Xd& points, FrameOptions options, int threads,
+                       const std::string& fit_name);
+
 }  // namespace polarform

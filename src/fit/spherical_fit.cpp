@@ -40,16 +40,12 @@ PoleReport pole_to_global(PoleReport p, const LocalFrame& f) {
 // Bae 2002, §3.1 Steps 1-5 with §3.3 and §4.3.
 SphericalFit fit_spherical(const Eigen::Matrix3Xd& points, const SphericalFitOptions& opt) {
   StageClock total, clock;
-  if (points.cols() < 16) throw InputError("spherical fit: " + std::to_string(points.cols()) +
-                                           " points, expected at least 16");
-  if (!points.allFinite()) throw InputError("spherical fit: a point is not finite");
   const int threads = opt.function.threads;
   ProgressRange progress(opt.function.progress, 0.0, 1.0);
   StageTimes times;
-  FrameOptions fopt = opt.frame;
-  fopt.quadric.threads = threads;
-  FrameEstimate frame = estimate_frame(points, fopt);
-  const Eigen::Matrix3Xd local = frame.frame.to_local(points);
+  LocalCloud cloud = local_cloud(points, opt.frame, threads, "spherical fit");
+  FrameEstimate& frame = cloud.frame;
+  const Eigen::Matrix3Xd& local = cloud.points;
   times.frame = clock.lap();
   progress(0.05);
 
