@@ -12,6 +12,11 @@
 
 namespace polarform {
 
+// The tightest conversion tolerance a project may ask for, mm. Below it double-precision evaluation
+// of a profile of ordinary size (radii up to metres) cannot verify the error, and the converter
+// would refine without end.
+inline constexpr double kMinTolerance = 1e-9;
+
 struct ConversionOptions {
   double tolerance = 1e-3;  // mm: bound on the measured max radial error of the result
   ArcKind base = ArcKind::quartic;

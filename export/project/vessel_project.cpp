@@ -4,6 +4,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "designers/convert/polar_conversion.h"
 #include "export/atomic_file.h"
 #include "export/xml_reader.h"
 #include "src/error.h"
@@ -145,6 +146,8 @@ VesselProject read_document(const XmlDocument& doc, std::vector<std::string>& wa
     if (const XMLElement* conversion = r.child("conversion"))
       reader.visit(conversion, [&](const XmlElementReader& cr) {
         p.tolerance = cr.positive("tolerance", p.tolerance);
+        if (p.tolerance < kMinTolerance)
+          cr.fail("tolerance", "a tolerance >= " + number(kMinTolerance) + " mm");
       });
   });
   return p;

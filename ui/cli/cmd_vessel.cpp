@@ -7,6 +7,7 @@
 
 #include "src/error.h"
 #include "ui/cli/commands.h"
+#include "ui/cli/validators.h"
 #include "ui/jobs/vessel_outputs.h"
 
 namespace polarform::cli {
@@ -87,7 +88,7 @@ void add_vessel_command(CLI::App& app) {
       ->check(CLI::ExistingFile);
   cmd->add_option("--out", args->out, "output directory (created if missing)")->required();
   cmd->add_option("--tol", args->tolerance, "conversion tolerance in mm (overrides the project)")
-      ->check(CLI::PositiveNumber);
+      ->check(tolerance_mm());
   cmd->add_flag("--quiet,-q", args->quiet, "print nothing but warnings and errors");
   cmd->callback([args] { run(*args); });
 }

@@ -2,6 +2,9 @@
 
 #include <chrono>
 
+#include "export/number_format.h"
+#include "src/error.h"
+
 namespace polarform {
 
 namespace {
@@ -17,6 +20,9 @@ double seconds_since(Clock::time_point start) {
 // Bae 2002, §5.2: synthesise R(θ), convert it with quasi-uniform base arcs (§5.1), revolve it.
 VesselJobResult run_vessel_job(const VesselProject& project) {
   const auto start = Clock::now();
+  if (!(project.tolerance >= kMinTolerance))
+    throw InputError("conversion tolerance " + format_round_trip(project.tolerance) +
+                     " mm: expected >= " + format_round_trip(kMinTolerance) + " mm");
   VesselJobResult r;
   r.project = project;
   r.design = to_design(project);

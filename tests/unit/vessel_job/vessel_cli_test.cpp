@@ -1,6 +1,7 @@
 // `polarform vessel` as a user runs it: exit code 0 and every file for a good project, 2 and one
 // line naming file:line:attribute for a bad one (with nothing written), 1 with the numbers for a
-// synthesis that does not converge; --tol overrides the project's tolerance.
+// synthesis that does not converge; --tol overrides the project's tolerance; no tolerance below
+// the converter's floor anywhere.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -8,7 +9,9 @@
 #include <cstdlib>
 #include <nlohmann/json.hpp>
 
+#include "src/error.h"
 #include "tests/unit/vessel_job/vessel_job_support.h"
+#include "ui/jobs/vessel_job.h"
 
 namespace polarform {
 namespace {
@@ -71,6 +74,32 @@ TEST(VesselCli, BadFileExitsTwoNamingTheLineAndWritesNothing) {
   EXPECT_TRUE(files_in(out).empty());
   EXPECT_EQ(polarform("vessel /nonexistent/design.xml --out " + out.string()).exit_code, 2);
   EXPECT_EQ(polarform("vessel " + bad.string()).exit_code, 2);  // --out is required
+}
+
+// The converter's floor (kMinTolerance, 1e-9 mm) holds for vessels as for cams: in the file, on
+// the command line and in the job itself.
+TEST(VesselCli, ToleranceBelowTheFloorExitsTwoAndWritesNothing) {
+  const std::filesystem::path out = scratch_dir("out");
+  const std::filesystem::path tight = write_text(
+      scratch_dir("in") / "tight.xml",
+      "<?xml version=\"1.0\"?>\n<polarform version=\"1\">\n"
+      "<vessel radius=\"500\" length=\"1500\" thickness=\"10\" pressure=\"2\">\n"
+      "<head preset=\"hemispherical\"/></vessel>\n<conversion tolerance=\"1e-12\"/>\n"
+      "</polarform>\n");
+  const CliRun file = polarform("vessel " + tight.string() + " --out " + out.string());
+  EXPECT_EQ(file.exit_code, 2);
+  EXPECT_EQ(file.err, "polarform: error: " + tight.string() +
+                          ":5: <conversion> attribute 'tolerance': expected a tolerance >= 1e-09 "
+                          "mm, got '1e-12'\n");
+  const CliRun flag = polarform("vessel " + example("hemispherical.xml").string() + " --out " +
+                                out.string() + " --tol 1e-10");
+  EXPECT_EQ(flag.exit_code, 2);
+  EXPECT_THAT(flag.err, HasSubstr("--tol"));
+  EXPECT_THAT(flag.err, HasSubstr("expected a tolerance >= 1e-09 mm"));
+  EXPECT_TRUE(files_in(out).empty());
+  VesselProject project = load_example("hemispherical.xml");
+  project.tolerance = 5e-10;
+  EXPECT_THROW(run_vessel_job(project), InputError);
 }
 
 TEST(VesselCli, InfeasibleDesignExitsTwoNamingTheFileAndTheNumbers) {
