@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <thread>
+#include <utility>
 
 #include "ui/studio/document_kind.h"
 #include "ui/studio/frame_statistics.h"
@@ -140,6 +141,7 @@ int App::run_interactive() {
       for (auto& w : workspaces_) dirty |= w->dirty();
       if (!dirty || confirm_quit_) break;
       window_->request_close(false);
+      pending_open_.reset();
       ask_discard_ = true;
     }
     frame();
@@ -319,7 +321,7 @@ int App::run_bench() {
   return 0;
 }
 
-void App::open_document(const std::filesystem::path& file, bool as_template) {
+void App::open_document(const std::filesystem::path& file, bool as_template, Unsaved unsaved) {
   WorkspaceKind kind = WorkspaceKind::cam;
   if (!guarded(log_, "Open " + file.filename().string(), [&] { kind = document_kind(file); }))
     return;
@@ -327,6 +329,11 @@ void App::open_document(const std::filesystem::path& file, bool as_template) {
   if (!target) {
     log_.error("Open " + file.string() + ": the " + std::string(workspace_name(kind)) +
                " workspace is not part of this build");
+    return;
+  }
+  if (unsaved == Unsaved::ask && target->dirty() && !options_.headless()) {
+    pending_open_ = PendingOpen{file, as_template, target->document_name()};
+    ask_discard_ = true;
     return;
   }
   if (!target->open(file, as_template)) return;
@@ -542,14 +549,27 @@ void App::draw_discard_dialog() {
   ask_discard_ = false;
   if (!ImGui::BeginPopupModal("Discard changes?", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
     return;
-  ImGui::TextUnformatted("A project has unsaved changes. Quit anyway?");
-  if (ImGui::Button("Quit without saving")) {
-    confirm_quit_ = true;
-    window_->request_close(true);
-    ImGui::CloseCurrentPopup();
+  if (pending_open_) {
+    ImGui::Text("%s has unsaved changes. Open %s and discard them?",
+                pending_open_->document.c_str(), pending_open_->file.filename().string().c_str());
+    if (ImGui::Button("Discard and open")) {
+      const PendingOpen open = *std::exchange(pending_open_, std::nullopt);
+      open_document(open.file, open.as_template, Unsaved::discard);
+      ImGui::CloseCurrentPopup();
+    }
+  } else {
+    ImGui::TextUnformatted("A project has unsaved changes. Quit anyway?");
+    if (ImGui::Button("Quit without saving")) {
+      confirm_quit_ = true;
+      window_->request_close(true);
+      ImGui::CloseCurrentPopup();
+    }
   }
   ImGui::SameLine();
-  if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+  if (ImGui::Button("Cancel")) {
+    pending_open_.reset();
+    ImGui::CloseCurrentPopup();
+  }
   ImGui::EndPopup();
 }
 

@@ -59,7 +59,11 @@ class App {
 
   Workspace* workspace(WorkspaceKind kind);
   Workspace& active();
-  void open_document(const std::filesystem::path& file, bool as_template = false);
+  // Opens a document in its workspace. Over unsaved changes an interactive session asks first
+  // (Unsaved::ask); the start-up, a confirmed question and scripts open at once.
+  enum class Unsaved { ask, discard };
+  void open_document(const std::filesystem::path& file, bool as_template = false,
+                     Unsaved unsaved = Unsaved::ask);
   void save(bool choose_path);
   void ask_to_open();
   void ask_export_path(const ExportRequest& request);
@@ -81,6 +85,12 @@ class App {
   ExportRequest pending_export_;
   bool show_shortcuts_ = false;
   bool confirm_quit_ = false, ask_discard_ = false;
+  struct PendingOpen {  // an open waiting for "discard changes?"
+    std::filesystem::path file;
+    bool as_template = false;
+    std::string document;  // the modified one
+  };
+  std::optional<PendingOpen> pending_open_;
   std::string title_;
 };
 
