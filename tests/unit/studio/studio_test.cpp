@@ -160,14 +160,16 @@ class StudioTest : public ::testing::Test {
   }
 
   // Renders `workspace` for `project` and checks the picture is a real frame, not a blank one.
-  StudioRun screenshot(const fs::path& project, const std::string& workspace) {
+  StudioRun screenshot(const fs::path& project, const std::string& workspace, int width = 1280,
+                       int height = 800) {
     const fs::path png = dir_ / (workspace + ".png");
     StudioRun r = run_studio("--project '" + project.string() + "' --workspace " + workspace +
-                             " --screenshot '" + png.string() + "' --size 1280x800");
+                             " --screenshot '" + png.string() + "' --size " +
+                             std::to_string(width) + "x" + std::to_string(height));
     EXPECT_EQ(r.status, 0) << r.output;
     const PixelStats s = pixel_stats(png);
-    EXPECT_EQ(s.width, 1280) << r.output;
-    EXPECT_EQ(s.height, 800);
+    EXPECT_EQ(s.width, width) << r.output;
+    EXPECT_EQ(s.height, height);
     EXPECT_GT(s.luminance_stddev, 20.0) << "a nearly uniform picture";
     EXPECT_GT(s.colours, 500u) << "too few colours for plots, text and shading";
     EXPECT_GT(s.off_background, 0.2) << "most of the picture is one colour";
@@ -225,6 +227,17 @@ TEST_F(StudioTest, CamWorkspaceRendersAndMeetsItsTolerance) {
   EXPECT_GT(number(n, "arcs"), 0);
   EXPECT_LE(number(n, "max_radial_error_mm"), number(n, "tolerance_mm"));
   EXPECT_EQ(error_count(r.output), 0) << r.output;
+}
+
+// The layout adapts to a small window: panels keep their minimum sizes and the design still
+// computes (the smallest size --size accepts is 320x240).
+TEST_F(StudioTest, SmallWindowsStillShowTheWorkspaces) {
+  const StudioRun cam = screenshot(kExamples / "cams" / "roller.xml", "cam", 640, 400);
+  EXPECT_LE(number(numbers(cam.output), "max_radial_error_mm"),
+            number(numbers(cam.output), "tolerance_mm"));
+  const StudioRun vessel =
+      screenshot(kExamples / "vessels" / "hemispherical.xml", "vessel", 800, 480);
+  EXPECT_EQ(number(numbers(vessel.output), "solved"), 1) << vessel.output;
 }
 
 TEST_F(StudioTest, StudyWorkspaceRendersAToleranceSweep) {
