@@ -1,6 +1,7 @@
 // The app shell: the window, the workspaces, the menu bar (projects, recent files, templates,
 // export, undo/redo, workspaces), keyboard shortcuts, drag-and-drop, the log panel and toasts,
-// the persisted state, and the three ways to run — interactive, --screenshot and --bench-frames.
+// the persisted state, and the ways to run — interactive, --script (app_script.cpp), --screenshot
+// and --bench-frames.
 #pragma once
 
 #include <filesystem>
