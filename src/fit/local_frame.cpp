@@ -21,6 +21,10 @@ Eigen::Matrix3Xd LocalFrame::to_local(const Eigen::Matrix3Xd& g) const {
 
 Eigen::Vector3d LocalFrame::to_global(const Eigen::Vector3d& l) const { return axes * l + origin; }
 
+Eigen::Matrix3Xd LocalFrame::to_global(const Eigen::Matrix3Xd& l) const {
+  return (axes * l).colwise() + origin;
+}
+
 namespace {
 
 // (w·P, w) -> (w·(R^{-1} P + T), w): Bae 2002, eq. (4.6) on homogeneous coordinates.

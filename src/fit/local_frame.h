@@ -22,6 +22,8 @@ struct LocalFrame {
   Eigen::Matrix3Xd to_local(const Eigen::Matrix3Xd& global) const;
   // ^Ωs = R^{-1} ^ωs + T; Bae 2002, eq. (4.6), applied to homogeneous control points.
   Eigen::Vector3d to_global(const Eigen::Vector3d& local) const;
+  // Every column; without it a 3×N matrix would silently bind to the Vector3d overload.
+  Eigen::Matrix3Xd to_global(const Eigen::Matrix3Xd& local) const;
   NurbsSurface to_global(const NurbsSurface& local) const;
   NurbsCurve3d to_global(const NurbsCurve3d& local) const;
 };
