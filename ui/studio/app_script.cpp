@@ -53,7 +53,7 @@ void App::run_action(const ScriptAction& action) {
         log_.error(where + "the " + args[0] + " workspace is not part of this build");
       break;
     case ScriptVerb::edit:
-      active().scripted_edit();
+      if (!active().scripted_edit()) log_.error(where + here + " has nothing a script can edit");
       break;
     case ScriptVerb::undo:
       if (active().can_undo())

@@ -412,12 +412,14 @@ void FitWorkspace::bench_step(int, int frames) {
   scene_.turn(2.0f * std::numbers::pi_v<float> / static_cast<float>(frames));
 }
 
-void FitWorkspace::scripted_edit() {
+bool FitWorkspace::scripted_edit() {
+  if (!cloud_) return false;
   settings_.use_tolerance = false;
   settings_.size_u = std::max(4, settings_.size_u - 4);
   settings_.size_v = std::max(4, settings_.size_v - 4);
   history_.settle(settings_, false);
   start_fit();
+  return true;
 }
 
 std::string FitWorkspace::numbers() const {

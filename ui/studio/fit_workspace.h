@@ -66,8 +66,9 @@ class FitWorkspace : public Workspace {
   void export_to(const ExportRequest& request, const std::filesystem::path& file) override;
 
   void bench_step(int frame, int frames) override;
-  // A coarser net (4 fewer control values each way, at least 4) and a new fit.
-  void scripted_edit() override;
+  // A coarser net (4 fewer control values each way, at least 4) and a new fit; false without a
+  // cloud.
+  bool scripted_edit() override;
   std::string numbers() const override;
 
  private:

@@ -79,10 +79,9 @@ class Workspace {
   virtual void export_to(const ExportRequest&, const std::filesystem::path&) {}
 
   // Headless modes: the scripted edit of benchmark frame `frame` of `frames`, the design edit of
-  // a script's `edit` (by default the whole benchmark edit at once), and the key numbers as
-  // "name=value" lines.
+  // a script's `edit` (false: the workspace has none), and the key numbers as "name=value" lines.
   virtual void bench_step(int, int) {}
-  virtual void scripted_edit() { bench_step(0, 1); }
+  virtual bool scripted_edit() { return false; }
   virtual std::string numbers() const { return {}; }
   // Milliseconds spent recomputing in the last update().
   virtual double last_compute_ms() const { return 0.0; }

@@ -462,11 +462,18 @@ undo
 numbers undone
 export all vessel_outputs
 save
+workspace study
+edit
 )");
   const StudioRun r = run_studio("--script '" + script.string() + "' --size 1280x800");
-  EXPECT_EQ(r.status, 1) << r.output;  // the last line: a template has no file to save to
-  EXPECT_EQ(error_count(r.output), 1) << r.output;
-  EXPECT_NE(r.output.find("has no file yet: use save-as PATH"), std::string::npos) << r.output;
+  EXPECT_EQ(r.status, 1) << r.output;  // the last lines: two failed actions
+  EXPECT_EQ(error_count(r.output), 2) << r.output;
+  EXPECT_NE(r.output.find("line 8: torispherical_100_6 (new) has no file yet: use save-as PATH"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("line 10: the study workspace has nothing a script can edit"),
+            std::string::npos)
+      << r.output;
   const auto solved = numbers(r.output, "solved:"), edited = numbers(r.output, "edited:");
   const auto undone = numbers(r.output, "undone:");
   EXPECT_NEAR(number(edited, "pressure_mpa") / number(solved, "pressure_mpa"), 1.5, 1e-12);
