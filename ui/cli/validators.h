@@ -9,7 +9,8 @@ namespace polarform::cli {
 // A finite number > 0 (a length in mm).
 CLI::Validator positive_mm();
 
-// A conversion tolerance in mm: a finite number >= kMinTolerance (designers/convert/polar_conversion.h).
+// A conversion tolerance in mm: a finite number >= kMinTolerance
+// (designers/convert/polar_conversion.h).
 CLI::Validator tolerance_mm();
 
 }  // namespace polarform::cli

@@ -114,8 +114,8 @@ void App::export_by_tag(const std::string& tag, const std::filesystem::path& pat
   if (choice == choices.end()) {
     std::string tags;
     for (const auto& c : choices) tags += " " + c.request.tag;
-    log_.error(where + "the " + std::string(workspace_name(active_)) + " workspace has no export '" +
-               tag + "' (exports:" + tags + ")");
+    log_.error(where + "the " + std::string(workspace_name(active_)) +
+               " workspace has no export '" + tag + "' (exports:" + tags + ")");
   } else if (!choice->enabled) {
     log_.error(where + "export " + tag + " is not available now" +
                (choice->tooltip.empty() ? "" : ": " + choice->tooltip));

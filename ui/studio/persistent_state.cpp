@@ -134,7 +134,8 @@ void save_state(const PersistentState& state, const std::filesystem::path& file)
   out << "window.width=" << state.window.width << "\nwindow.height=" << state.window.height << "\n";
   out << "window.maximized=" << (state.window.maximized ? 1 : 0) << "\n";
   for (const auto& [key, value] : state.layout) {
-    char shortest[32];  // the shortest text that reads back as the same float: 0.42, not 0.419999987
+    // The shortest text that reads back as the same float: 0.42, not 0.419999987.
+    char shortest[32];
     const auto end = std::to_chars(shortest, shortest + sizeof shortest, value).ptr;
     out << "layout." << key << "=" << std::string_view(shortest, end - shortest) << "\n";
   }

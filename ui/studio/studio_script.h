@@ -7,12 +7,13 @@
 //   drop PATH…             files dropped on the window
 //   template KIND NAME     File ▸ New from template (KIND cam or vessel, NAME as in examples/)
 //   workspace KIND         switch to the cam, study, vessel or fit workspace
-//   edit                   the workspace's scripted edit, as one undoable step (the edit of
-//                          --bench-frames: cam moves a segment boundary, vessel raises the pressure)
+//   edit                   the workspace's scripted edit, as one undoable step (cam and vessel:
+//                          the --bench-frames edit; fit: a coarser net, fitted again)
 //   undo / redo            Edit ▸ Undo / Redo
 //   save                   File ▸ Save (the document must have a file)
 //   save-as PATH           File ▸ Save as
-//   export TAG PATH        File ▸ Export; TAG names the item (all, iges, step, dxf, x3d, csv, study)
+//   export TAG PATH        File ▸ Export; TAG names the item (all, iges, step, dxf, x3d, csv,
+//                          study)
 //   screenshot PATH        the window as it is now, to a PNG
 //   numbers [LABEL]        print the workspace's key numbers under "LABEL:" (default "numbers:")
 #pragma once

@@ -1,9 +1,10 @@
 // Bounded mutation fuzzing of every parser polarform owns: point clouds (xyz/csv, PLY ascii and
-// binary in both byte orders, STL ascii and binary, OBJ, OFF) and the cam, vessel and fit
-// project files, and the studio's --script (when the studio is built). Each valid seed is mutated (byte flips, deletions, duplications, insertions of
-// number-breaking tokens, truncation) with a fixed seed; every mutant must either parse into a
-// valid result or throw InputError — no other exception, no crash (run `make asan` for memory
-// errors). POLARFORM_FUZZ_ITERATIONS scales the run (default 10000 mutants per seed).
+// binary in both byte orders, STL ascii and binary, OBJ, OFF), the cam, vessel and fit project
+// files, and the studio's --script (when the studio is built). Each valid seed is mutated (byte
+// flips, deletions, duplications, insertions of number-breaking tokens, truncation) with a fixed
+// seed; every mutant must either parse into a valid result or throw InputError — no other
+// exception, no crash (run `make asan` for memory errors). POLARFORM_FUZZ_ITERATIONS scales the
+// run (default 10000 mutants per seed).
 #include <gtest/gtest.h>
 
 #include <algorithm>
