@@ -17,6 +17,7 @@ using tinyxml2::XMLElement;
 constexpr const char* kMethods[] = {"auto", "polar", "spherical", "cylindrical"};
 constexpr const char* kClosures[] = {"auto", "no", "yes"};  // in Closure's order
 constexpr const char* kMeasures[] = {"max", "p99", "p95", "rms"};
+constexpr const char* kFairness[] = {"fixed", "relative", "gcv"};  // in FairnessOptions::Mode's
 
 template <class Enum, std::size_t N>
 Enum from_word(const std::string& word, const char* const (&words)[N]) {
@@ -79,6 +80,11 @@ void read_fit(const XMLElement* e, const std::string& file, std::vector<std::str
     if (p.axis->norm() == 0.0) r.fail("axis", "a non-zero direction x,y,z");
   }
   p.skip_bad = r.choice("skip-bad", {"true", "false"}, "false") == "true";
+  p.fairness = from_word<FairnessOptions::Mode>(
+      r.choice("fairness", {"fixed", "relative", "gcv"}, "relative"), kFairness);
+  if (r.has("lambda")) p.fairness_weight = r.positive("lambda");
+  p.base = r.choice("base", {"rqb", "quartic"}, "rqb") == "quartic" ? ArcKind::quartic
+                                                                     : ArcKind::rqb;
   const std::vector<std::string> w = r.warnings();
   warnings.insert(warnings.end(), w.begin(), w.end());
 }
@@ -142,6 +148,9 @@ std::string fit_project_xml(const FitProject& p) {
   if (p.center) attribute(out, "center", list({p.center->x(), p.center->y(), p.center->z()}));
   if (p.axis) attribute(out, "axis", list({p.axis->x(), p.axis->y(), p.axis->z()}));
   attribute(out, "skip-bad", p.skip_bad ? "true" : "false");
+  attribute(out, "fairness", kFairness[static_cast<int>(p.fairness)]);
+  attribute(out, "lambda", format_round_trip(p.fairness_weight));
+  attribute(out, "base", p.base == ArcKind::quartic ? "quartic" : "rqb");
   out << "/>\n</polarform>\n";
   return out.str();
 }

@@ -33,6 +33,10 @@ struct FitProject {
   std::optional<Eigen::Vector3d> center;  // frame origin / polar centre, mm
   std::optional<Eigen::Vector3d> axis;    // frame axis k / a profile's plane normal
   bool skip_bad = false;
+  // Fairing of F (Bae 2002, §3.4.2): how λ is chosen, and the weight of the fixed / relative rule.
+  FairnessOptions::Mode fairness = FairnessOptions::Mode::relative;
+  double fairness_weight = 1e-7;
+  ArcKind base = ArcKind::rqb;  // the base circles' arcs: RQB or quasi-uniform quartic
 
   bool operator==(const FitProject&) const = default;
 };
@@ -44,7 +48,8 @@ std::filesystem::path scan_path(const FitProject& project,
 // Reads <polarform version="1"><fit …/></polarform>, or a bare <fit> root:
 //   <fit scan="cloud.ply" method="auto|polar|spherical|cylindrical" closed="auto|yes|no"
 //        pole="none|g1|cap" degree="3,3" ctrl="12,12" tolerance="mm"
-//        tolerance-measure="max|p99|p95|rms" center="x,y,z" axis="x,y,z" skip-bad="false"/>
+//        tolerance-measure="max|p99|p95|rms" center="x,y,z" axis="x,y,z" skip-bad="false"
+//        fairness="fixed|relative|gcv" lambda="1e-7" base="rqb|quartic"/>
 // Throws InputError "file:line: <fit> attribute 'x': expected …" for bad values; appends a warning
 // for every unknown attribute or element.
 FitProject read_fit_project(const std::filesystem::path& file, std::vector<std::string>& warnings);

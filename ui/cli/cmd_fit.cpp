@@ -1,6 +1,7 @@
 // `polarform fit`: fit a scanned point cloud with a polar NURBS curve (a planar profile) or a
 // spherical / cylindrical NURBS surface (Bae 2002, ch. 2-4) and write the geometry, a deviation
 // cloud, a preview plot and a report.
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
@@ -21,6 +22,7 @@ struct FitArgs {
   std::string scan, out;
   // Empty: not given (the project's value, or the default).
   std::string method, closed, pole, degree, ctrl, tol, tol_measure, center, axis;
+  std::string fairness, lambda, base;
   std::string threads = "2";
   bool skip_bad = false, quiet = false;
 };
@@ -63,6 +65,17 @@ FitJobOptions job_options(const FitArgs& a, FitJobOptions o) {
         measures[parse_choice("--tol-measure", a.tol_measure, {"max", "p99", "p95", "rms"})];
   if (!a.center.empty()) o.center = vector3("--center", a.center, true);
   if (!a.axis.empty()) o.axis = vector3("--axis", a.axis, false);
+  if (!a.fairness.empty())
+    o.fairness = static_cast<FairnessOptions::Mode>(
+        parse_choice("--fairness", a.fairness, {"fixed", "relative", "gcv"}));
+  if (!a.lambda.empty()) {
+    o.fairness_weight = parse_numbers("--lambda", a.lambda, 1, 1)[0];
+    if (!(o.fairness_weight > 0) || !std::isfinite(o.fairness_weight))
+      throw InputError("--lambda '" + a.lambda + "': expected a positive number");
+  }
+  if (!a.base.empty())
+    o.base = parse_choice("--base", a.base, {"rqb", "quartic"}) == 1 ? ArcKind::quartic
+                                                                   : ArcKind::rqb;
   o.threads = parse_int_pair("--threads", a.threads, 1, 256).first;
   o.skip_bad = o.skip_bad || a.skip_bad;
   return o;
@@ -145,6 +158,15 @@ void add_fit_command(CLI::App& app) {
                   "X,Y[,Z]: origin of the fit's frame in mm (profiles: the polar centre)");
   cmd->add_option("--axis", args->axis,
                   "X,Y,Z: axis k of the fit's frame (profiles: the plane normal)");
+  cmd->add_option("--fairness", args->fairness,
+                  "fixed|relative|gcv: how the fairing weight λ is chosen (default relative: "
+                  "--lambda times the data's scale; fixed: λ = --lambda; gcv: generalised "
+                  "cross-validation)");
+  cmd->add_option("--lambda", args->lambda,
+                  "the fairing weight of --fairness fixed or relative (default 1e-7)");
+  cmd->add_option("--base", args->base,
+                  "rqb|quartic: arcs of the base circles (default rqb; quartic: quasi-uniform "
+                  "quartic arcs, Blanc–Schlick)");
   cmd->add_option("--threads", args->threads, "worker threads (default 2)");
   cmd->add_flag("--skip-bad", args->skip_bad,
                 "skip unparsable or non-finite records instead of stopping");

@@ -1,5 +1,6 @@
 #include "ui/jobs/fit_job.h"
 
+#include <cmath>
 #include <sstream>
 
 #include "src/error.h"
@@ -15,7 +16,11 @@ FunctionFitOptions function_options(const FitJobOptions& o) {
   if (o.tolerance && !(*o.tolerance > 0.0))
     throw InputError("tolerance must be a positive number of mm");
   if (o.threads < 1) throw InputError("threads must be at least 1");
+  if (!(o.fairness_weight > 0.0) || !std::isfinite(o.fairness_weight))
+    throw InputError("the fairness weight λ must be a positive number");
   FunctionFitOptions f;
+  f.fairness.mode = o.fairness;
+  f.fairness.weight = o.fairness_weight;
   if (o.degree) f.degree_u = o.degree->first, f.degree_v = o.degree->second;
   if (o.ctrl) f.size_u = o.ctrl->first, f.size_v = o.ctrl->second;
   if (o.tolerance) f.tolerance = *o.tolerance, f.measure = o.measure;
@@ -36,6 +41,7 @@ void fit_polar(FitJobResult& r, const FitJobOptions& o) {
   PolarFitOptions po;
   po.function = function_options(o);
   po.closure = o.closure;
+  po.base_kind = o.base;
   if (o.center) po.centre = r.plane.frame.to_local(*o.center).head<2>();
   const Eigen::Matrix2Xd local = r.plane.frame.to_local(r.points).topRows(2);
   r.polar = fit_polar_curve(local, po);
@@ -49,6 +55,7 @@ void fit_surface(FitJobResult& r, const FitJobOptions& o) {
   ro.spherical.frame.origin = ro.cylindrical.frame.origin = o.center;
   ro.spherical.frame.axis = ro.cylindrical.frame.axis = o.axis;
   ro.spherical.closure = ro.cylindrical.closure = o.closure;
+  ro.spherical.base_kind = ro.cylindrical.base_kind = o.base;
   if (o.pole) ro.spherical.north = ro.spherical.south = *o.pole;
   if (o.method == FitJobMethod::spherical) ro.method = FitMethod::spherical;
   if (o.method == FitJobMethod::cylindrical) ro.method = FitMethod::cylindrical;
@@ -62,6 +69,9 @@ FitJobResult run(Eigen::Matrix3Xd points, const std::string& name, const FitJobO
   FitJobResult r;
   r.input = name;
   r.points = std::move(points);
+  r.fairness = o.fairness;
+  r.fairness_weight = o.fairness_weight;
+  r.base = o.base;
   if (o.pole && *o.pole == PoleTreatment::cap && o.closure == Closure::open)
     throw InputError(
         "a pole cap closes a closed spherical fit: --pole cap needs --closed auto or yes");
@@ -119,6 +129,9 @@ FitJobOptions fit_job_options(const FitProject& p) {
   o.center = p.center;
   o.axis = p.axis;
   o.skip_bad = p.skip_bad;
+  o.fairness = p.fairness;
+  o.fairness_weight = p.fairness_weight;
+  o.base = p.base;
   return o;
 }
 

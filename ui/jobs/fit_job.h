@@ -28,6 +28,9 @@ struct FitJobOptions {
   std::optional<Eigen::Vector3d> center;  // frame origin / polar centre (projected)
   std::optional<Eigen::Vector3d> axis;    // frame k / normal of a profile's plane
   bool skip_bad = false;
+  FairnessOptions::Mode fairness = FairnessOptions::Mode::relative;  // how λ is chosen
+  double fairness_weight = 1e-7;  // λ (fixed) or its scale-free weight (relative); gcv: unused
+  ArcKind base = ArcKind::rqb;    // the base circles' arcs
   int threads = 2;
   ProgressFn read_progress;  // fraction of the file read
   ProgressFn fit_progress;   // fraction of the fit done (restarts when auto tries a second method)
@@ -43,6 +46,9 @@ struct FitJobResult {
   std::optional<PolarCurveFit> polar;  // in plane coordinates
   std::optional<NurbsCurve3d> curve;   // the polar curve placed back in space
   std::optional<RotationalFit> surface;
+  FairnessOptions::Mode fairness = FairnessOptions::Mode::relative;  // as asked
+  double fairness_weight = 1e-7;
+  ArcKind base = ArcKind::rqb;
   double seconds = 0.0;  // read + fit
 
   const FitReport& report() const { return polar ? polar->report : surface->report(); }

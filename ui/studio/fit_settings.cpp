@@ -51,6 +51,9 @@ FitSettings fit_settings(const FitProject& p, std::vector<std::string>& ignored)
   s.center = p.center;
   s.axis = p.axis;
   s.skip_bad = p.skip_bad;
+  s.fairness = static_cast<int>(p.fairness);
+  s.fairness_weight = p.fairness_weight;
+  s.quartic_base = p.base == ArcKind::quartic;
   return s;
 }
 
@@ -72,6 +75,9 @@ FitProject fit_project(const FitSettings& s, const std::filesystem::path& scan) 
   p.center = s.center;
   p.axis = s.axis;
   p.skip_bad = s.skip_bad;
+  p.fairness = static_cast<FairnessOptions::Mode>(s.fairness);
+  p.fairness_weight = s.fairness_weight;
+  p.base = s.quartic_base ? ArcKind::quartic : ArcKind::rqb;
   return p;
 }
 

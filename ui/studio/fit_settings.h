@@ -44,8 +44,7 @@ RotationalFitOptions to_fit_options(const FitSettings& settings, int threads);
 // surface fit does not use (the polar method).
 FitSettings fit_settings(const FitProject& project, std::vector<std::string>& ignored);
 
-// The fit project for these settings and this scan path (fairness and base arcs are not part of
-// the project format and keep their defaults when it is opened again).
+// The fit project for these settings and this scan path.
 FitProject fit_project(const FitSettings& settings, const std::filesystem::path& scan);
 
 }  // namespace polarform::studio

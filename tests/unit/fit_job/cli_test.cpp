@@ -93,6 +93,64 @@ TEST(Cli, FitRunsAProjectAndFlagsOverrideIt) {
   EXPECT_FALSE(std::filesystem::exists(dir / "bad"));
 }
 
+// Fairing and base arcs from the command line or the project: for the same F, the quartic base
+// raises the NURBS degrees of a spherical product from (5, 5) to (7, 7) (arcs of degree 4 instead
+// of 2); GCV picks its own λ; a project's fixed λ is used as given; bad values exit 2.
+TEST(Cli, FairnessAndBaseArcsReachTheFit) {
+  const auto dir = scratch_dir();
+  const std::string project = example("scans/sphere_like_fit.xml");
+  ASSERT_EQ(polarform("fit " + project + " --out " + (dir / "rqb").string() + " -q", dir).code, 0);
+  ASSERT_EQ(polarform("fit " + project + " --base quartic --out " + (dir / "quartic").string() +
+                          " -q",
+                      dir)
+                .code,
+            0);
+  ASSERT_EQ(polarform("fit " + project + " --fairness gcv --out " + (dir / "gcv").string() +
+                          " -q",
+                      dir)
+                .code,
+            0);
+  const nlohmann::json rqb = read_json(dir / "rqb/report.json");
+  const nlohmann::json quartic = read_json(dir / "quartic/report.json");
+  const nlohmann::json gcv = read_json(dir / "gcv/report.json");
+  EXPECT_EQ(rqb["base"], "rqb");
+  EXPECT_EQ(rqb["degrees"]["nurbs"], nlohmann::json::array({5, 5}));
+  EXPECT_EQ(quartic["base"], "quartic");
+  EXPECT_EQ(quartic["degrees"]["nurbs"], nlohmann::json::array({7, 7}));
+  EXPECT_EQ(quartic["control_net"]["F"], rqb["control_net"]["F"]);
+  EXPECT_EQ(rqb["fairness"], "relative");
+  EXPECT_EQ(rqb["fairness_weight"], 1e-7);
+  EXPECT_EQ(gcv["fairness"], "gcv");
+  EXPECT_FALSE(gcv.contains("fairness_weight"));
+  EXPECT_NE(gcv["fairness_lambda"], rqb["fairness_lambda"]);
+  // Both fit the σ = 0.02 mm scan to its noise.
+  for (const auto* r : {&rqb, &quartic, &gcv})
+    EXPECT_LT((*r)["error_mm"]["rms"].get<double>(), 0.025);
+
+  // A project's fixed λ, and flags that refuse bad values.
+  write_text(dir / "fixed.xml",
+             "<polarform version=\"1\">\n<fit scan=\"" + example("scans/sphere_like.xyz") +
+                 "\" method=\"spherical\" closed=\"yes\" pole=\"g1\" fairness=\"fixed\" "
+                 "lambda=\"0.001\"/>\n</polarform>\n");
+  ASSERT_EQ(polarform("fit " + (dir / "fixed.xml").string() + " --out " +
+                          (dir / "fixed").string() + " -q",
+                      dir)
+                .code,
+            0);
+  const nlohmann::json fixed = read_json(dir / "fixed/report.json");
+  EXPECT_EQ(fixed["fairness"], "fixed");
+  EXPECT_EQ(fixed["fairness_lambda"], 0.001);
+  for (const char* bad : {"--fairness smooth", "--lambda 0", "--lambda -1e-3", "--base cubic"}) {
+    const Outcome r =
+        polarform("fit " + project + " " + bad + " --out " + (dir / "bad").string(), dir);
+    EXPECT_EQ(r.code, 2) << bad;
+    EXPECT_NE(r.err.find(std::string(bad).substr(0, std::string(bad).find(' '))),
+              std::string::npos)
+        << r.err;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir / "bad"));
+}
+
 TEST(Cli, BrokenScanExitsTwoNamingTheLineAndWritesNothing) {
   const auto dir = scratch_dir();
   const auto scan = write_text(dir / "bad.xyz", "x y z\n1 2 3\n4 5 6\n7 8 abc\n1 1 1\n");

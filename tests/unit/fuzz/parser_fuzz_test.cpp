@@ -211,12 +211,17 @@ TEST(ParserFuzz, VesselProjectReaderAcceptsOrRejectsCleanly) {
 }
 
 TEST(ParserFuzz, FitProjectReaderAcceptsOrRejectsCleanly) {
-  fuzz(read_text("examples/scans/sphere_like_fit.xml"),
-       [](const std::string& text) {
-         std::vector<std::string> warnings;
-         parse_fit_project(text, "fuzz.xml", warnings);
-       },
-       300, iterations());
+  const auto parse = [](const std::string& text) {
+    std::vector<std::string> warnings;
+    parse_fit_project(text, "fuzz.xml", warnings);
+  };
+  fuzz(read_text("examples/scans/sphere_like_fit.xml"), parse, 300, iterations());
+  // Every attribute at once.
+  fuzz("<polarform version=\"1\"><fit scan=\"a.ply\" method=\"cylindrical\" closed=\"no\" "
+       "pole=\"cap\" degree=\"2,4\" tolerance=\"0.05\" tolerance-measure=\"p99\" "
+       "center=\"1,2,3\" axis=\"0,0,1\" skip-bad=\"true\" fairness=\"fixed\" lambda=\"1e-4\" "
+       "base=\"quartic\"/></polarform>",
+       parse, 301, iterations());
 }
 
 #ifdef POLARFORM_HAVE_STUDIO_LOGIC

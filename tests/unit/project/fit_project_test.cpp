@@ -52,6 +52,9 @@ TEST(FitProject, EveryFieldRoundTripsExactly) {
   p.center = Eigen::Vector3d(1.0 / 3, -2e-17, 123456.789);
   p.axis = Eigen::Vector3d(0, 0.6, 0.8);
   p.skip_bad = true;
+  p.fairness = FairnessOptions::Mode::fixed;
+  p.fairness_weight = 1.0 / 7;
+  p.base = ArcKind::quartic;
   const FitProject back = parse(fit_project_xml(p));
   EXPECT_EQ(back, p);
   EXPECT_EQ(fit_project_xml(back), fit_project_xml(p));
@@ -71,6 +74,9 @@ TEST(FitProject, MinimalFileTakesTheDefaults) {
   EXPECT_FALSE(p.pole || p.degree || p.ctrl || p.tolerance || p.center || p.axis);
   EXPECT_EQ(p.measure, ToleranceMeasure::max);
   EXPECT_FALSE(p.skip_bad);
+  EXPECT_EQ(p.fairness, FairnessOptions::Mode::relative);
+  EXPECT_EQ(p.fairness_weight, 1e-7);
+  EXPECT_EQ(p.base, ArcKind::rqb);
   EXPECT_EQ(scan_path(p, "/data/project/fit.xml"), fs::path("/data/project/a.xyz"));
   EXPECT_EQ(scan_path(parse("<fit scan=\"/abs/b.ply\"/>"), "/x/fit.xml"), fs::path("/abs/b.ply"));
 }
@@ -96,6 +102,10 @@ TEST(FitProject, BadValuesNameLineAndAttribute) {
       {"scan=\"a.xyz\" axis=\"0,0,0\"", "non-zero direction"},
       {"scan=\"a.xyz\" axis=\"0,nan,1\"", "attribute 'axis'"},
       {"scan=\"a.xyz\" skip-bad=\"1\"", "attribute 'skip-bad'"},
+      {"scan=\"a.xyz\" fairness=\"smooth\"", "attribute 'fairness'"},
+      {"scan=\"a.xyz\" lambda=\"0\"", "attribute 'lambda'"},
+      {"scan=\"a.xyz\" lambda=\"inf\"", "attribute 'lambda'"},
+      {"scan=\"a.xyz\" base=\"cubic\"", "attribute 'base'"},
   };
   for (const auto& c : cases)
     EXPECT_NE(error_of(c.attributes).find(c.expected), std::string::npos)

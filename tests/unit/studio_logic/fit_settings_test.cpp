@@ -1,6 +1,6 @@
-// The fit workspace's settings and fit project files: what the project format holds survives
-// settings → project → XML → project → settings exactly (frame overrides included); the polar
-// method, which the studio does not fit, is named; the settings become the fitter's options
+// The fit workspace's settings and fit project files: every setting survives settings → project
+// → XML → project → settings exactly (frame overrides, fairness and base arcs included); the
+// polar method, which the studio does not fit, is named; the settings become the fitter's options
 // (method, net or tolerance, closure, poles, frame).
 #include <gtest/gtest.h>
 
@@ -27,6 +27,9 @@ TEST(FitSettings, ProjectFieldsRoundTrip) {
   s.size_u = 9, s.size_v = 30;
   s.closure = static_cast<int>(Closure::closed);
   s.pole = static_cast<int>(PoleTreatment::cap);
+  s.fairness = static_cast<int>(FairnessOptions::Mode::gcv);
+  s.fairness_weight = 3e-5;
+  s.quartic_base = true;
   EXPECT_EQ(round_trip(s), s);
 
   s.use_tolerance = true;
