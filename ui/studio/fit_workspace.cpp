@@ -363,6 +363,9 @@ FitJobResult FitWorkspace::job_result() const {
   r.reason = fit_->fit.reason;
   r.plane = fit_plane(r.points);
   r.surface = fit_->fit;
+  r.fairness = static_cast<FairnessOptions::Mode>(fit_->settings.fairness);
+  r.fairness_weight = fit_->settings.fairness_weight;
+  r.base = fit_->settings.quartic_base ? ArcKind::quartic : ArcKind::rqb;
   r.seconds = cloud_->read_seconds + fit_seconds_;
   return r;
 }

@@ -447,6 +447,8 @@ TEST_F(StudioTest, ScriptDropsFilesOnTheWindow) {
   const auto report = nlohmann::json::parse(slurp(dir_ / "fit_outputs" / "report.json"));
   EXPECT_NEAR(report["error_mm"]["rms"].get<double>(), number(dropped, "rms_mm"), 1e-9)
       << report.dump(1);
+  EXPECT_EQ(report["fairness"], "relative");  // the studio's defaults, as polarform fit's
+  EXPECT_EQ(report["base"], "rqb");
   EXPECT_TRUE(fs::exists(dir_ / "fit_outputs" / "surface.igs"));
   EXPECT_TRUE(fs::exists(dir_ / "fit_outputs" / "deviation.ply"));
 }
