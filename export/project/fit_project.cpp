@@ -120,6 +120,8 @@ std::string list(std::initializer_list<double> values) {
 
 }  // namespace
 
+const char* fairness_word(FairnessOptions::Mode mode) { return kFairness[static_cast<int>(mode)]; }
+
 std::filesystem::path scan_path(const FitProject& project,
                                 const std::filesystem::path& project_file) {
   return project.scan.is_absolute() ? project.scan : project_file.parent_path() / project.scan;
@@ -148,7 +150,7 @@ std::string fit_project_xml(const FitProject& p) {
   if (p.center) attribute(out, "center", list({p.center->x(), p.center->y(), p.center->z()}));
   if (p.axis) attribute(out, "axis", list({p.axis->x(), p.axis->y(), p.axis->z()}));
   attribute(out, "skip-bad", p.skip_bad ? "true" : "false");
-  attribute(out, "fairness", kFairness[static_cast<int>(p.fairness)]);
+  attribute(out, "fairness", fairness_word(p.fairness));
   attribute(out, "lambda", format_round_trip(p.fairness_weight));
   attribute(out, "base", p.base == ArcKind::quartic ? "quartic" : "rqb");
   out << "/>\n</polarform>\n";

@@ -41,6 +41,9 @@ struct FitProject {
   bool operator==(const FitProject&) const = default;
 };
 
+// "fixed", "relative" or "gcv": the word of a fairing rule in fit projects and reports.
+const char* fairness_word(FairnessOptions::Mode mode);
+
 // The scan's path: `project.scan` taken relative to the folder of `project_file`.
 std::filesystem::path scan_path(const FitProject& project,
                                 const std::filesystem::path& project_file);

@@ -191,8 +191,7 @@ json fit_report_json(const FitJobResult& r, const std::vector<std::string>& file
     j["control_net"] = {{"F", json::array({rep.size_u, rep.size_v})},
                         {"nurbs", json::array({rep.nurbs_size_u, rep.nurbs_size_v})}};
   }
-  constexpr const char* kFairness[] = {"fixed", "relative", "gcv"};  // FairnessOptions::Mode
-  j["fairness"] = kFairness[static_cast<int>(r.fairness)];
+  j["fairness"] = fairness_word(r.fairness);
   if (r.fairness != FairnessOptions::Mode::gcv) j["fairness_weight"] = r.fairness_weight;
   j["fairness_lambda"] = rep.lambda;
   j["base"] = r.base == ArcKind::quartic ? "quartic" : "rqb";
