@@ -416,6 +416,20 @@ export all all
   for (const char* file : {"profile.igs", "profile.stp", "profile.dxf", "profile.x3d",
                            "svaj.csv", "svaj.svg", "report.html"})
     EXPECT_TRUE(fs::exists(dir_ / "all" / file)) << file;
+  // The saved project through `polarform cam` gives the same report (but for its timings) and
+  // the same CSV and DXF bytes.
+  const std::string cli = (fs::path(POLARFORM_BINARY_DIR) / "ui" / "cli" / "polarform").string();
+  ASSERT_EQ(std::system(("'" + cli + "' cam '" + (dir_ / "saved cam.xml").string() + "' --out '" +
+                         (dir_ / "cli").string() + "' -q")
+                            .c_str()),
+            0);
+  auto cli_report = nlohmann::json::parse(slurp(dir_ / "cli" / "report.json"));
+  auto app_report = report;
+  cli_report.erase("seconds");
+  app_report.erase("seconds");
+  EXPECT_EQ(cli_report, app_report);
+  for (const char* file : {"svaj.csv", "profile.dxf"})
+    EXPECT_EQ(slurp(dir_ / "cli" / file), slurp(dir_ / "all" / file)) << file;
 }
 
 // Files dropped on the window open in the workspace they belong to; a broken one is a message and
