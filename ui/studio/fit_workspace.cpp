@@ -11,7 +11,6 @@
 #include "export/iges_writer.h"
 #include "export/step_writer.h"
 #include "export/x3d_writer.h"
-#include "designers/scan/cloud_plane.h"
 #include "src/io/point_cloud.h"
 #include "ui/jobs/fit_outputs.h"
 #include "ui/studio/colors.h"
@@ -360,8 +359,7 @@ FitJobResult FitWorkspace::job_result() const {
   r.points = cloud_->points;
   r.dropped = cloud_->dropped;
   r.method = to_string(fit_->fit.method);
-  r.reason = fit_->fit.reason;
-  r.plane = fit_plane(r.points);
+  r.reason = fit_->fit.reason;  // r.plane: only profiles (polar fits) report it
   r.surface = fit_->fit;
   r.fairness = static_cast<FairnessOptions::Mode>(fit_->settings.fairness);
   r.fairness_weight = fit_->settings.fairness_weight;
