@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "ui/jobs/vessel_job.h"
+#include "jobs/vessel/vessel_job.h"
 
 namespace polarform {
 namespace {

@@ -7,7 +7,7 @@
 
 #include "ui/cli/commands.h"
 #include "ui/cli/validators.h"
-#include "ui/jobs/cam_outputs.h"
+#include "jobs/cam/cam_outputs.h"
 
 namespace polarform::cli {
 

@@ -11,8 +11,8 @@
 #include "src/error.h"
 #include "ui/cli/commands.h"
 #include "ui/cli/progress_bar.h"
-#include "ui/jobs/fit_arguments.h"
-#include "ui/jobs/fit_outputs.h"
+#include "ui/cli/fit_arguments.h"
+#include "jobs/fit/fit_outputs.h"
 
 namespace polarform::cli {
 

@@ -10,8 +10,8 @@
 #include "src/error.h"
 #include "ui/cli/commands.h"
 #include "ui/cli/progress_bar.h"
-#include "ui/jobs/fit_arguments.h"
-#include "ui/jobs/scan_cam_outputs.h"
+#include "ui/cli/fit_arguments.h"
+#include "jobs/scan_cam/scan_cam_outputs.h"
 
 namespace polarform::cli {
 

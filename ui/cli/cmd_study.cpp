@@ -7,7 +7,7 @@
 #include "export/number_format.h"
 #include "ui/cli/commands.h"
 #include "ui/cli/progress_bar.h"
-#include "ui/jobs/study_job.h"
+#include "jobs/study/study_job.h"
 
 namespace polarform::cli {
 

@@ -8,7 +8,7 @@
 #include "src/error.h"
 #include "ui/cli/commands.h"
 #include "ui/cli/validators.h"
-#include "ui/jobs/vessel_outputs.h"
+#include "jobs/vessel/vessel_outputs.h"
 
 namespace polarform::cli {
 

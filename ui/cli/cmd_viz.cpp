@@ -5,8 +5,8 @@
 
 #include "src/error.h"
 #include "ui/cli/commands.h"
-#include "ui/jobs/fit_arguments.h"
-#include "ui/jobs/viz_outputs.h"
+#include "ui/cli/fit_arguments.h"
+#include "jobs/viz/viz_outputs.h"
 
 namespace polarform::cli {
 

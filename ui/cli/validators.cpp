@@ -5,7 +5,7 @@
 #include <optional>
 
 #include "export/number_format.h"
-#include "export/project/cam_project.h"
+#include "jobs/project/cam_project.h"
 
 namespace polarform::cli {
 

@@ -6,7 +6,7 @@
 
 #include "designers/cam/contour_polar_function.h"
 #include "designers/convert/conversion_error.h"
-#include "ui/jobs/cam_job.h"
+#include "jobs/cam/cam_job.h"
 
 namespace polarform::studio {
 namespace {

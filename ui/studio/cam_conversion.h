@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "designers/convert/polar_conversion.h"
-#include "export/project/cam_project.h"
+#include "jobs/project/cam_project.h"
 #include "ui/studio/cam_results.h"
 #include "ui/studio/conversion_summary.h"
 

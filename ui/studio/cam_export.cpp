@@ -1,4 +1,4 @@
-// The cam workspace's File ▸ Export, through the job layer the CLI uses (ui/jobs): every output
+// The cam workspace's File ▸ Export, through the job layer the CLI uses (jobs/): every output
 // of `polarform cam` into a folder, or one profile file (IGES, STEP, DXF, X3D) — the exact-degree
 // profile, or the degree-capped one when the project limits the degree — and the sampled motion
 // as CSV. Part of CamWorkspace (cam_workspace.h).
@@ -10,8 +10,8 @@
 #include "export/iges_writer.h"
 #include "export/step_writer.h"
 #include "export/x3d_writer.h"
-#include "ui/jobs/cam_job.h"
-#include "ui/jobs/cam_outputs.h"
+#include "jobs/cam/cam_job.h"
+#include "jobs/cam/cam_outputs.h"
 #include "ui/studio/cam_workspace.h"
 #include "ui/studio/guarded.h"
 

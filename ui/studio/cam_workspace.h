@@ -8,7 +8,7 @@
 #include <string>
 
 #include "designers/cam/cam_design.h"
-#include "export/project/cam_project.h"
+#include "jobs/project/cam_project.h"
 #include "ui/studio/cam_conversion.h"
 #include "ui/studio/cam_results.h"
 #include "ui/studio/cam_settings_panel.h"

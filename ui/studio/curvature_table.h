@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "export/project/vessel_project.h"
+#include "jobs/project/vessel_project.h"
 
 namespace polarform::studio {
 

@@ -4,7 +4,7 @@
 #include <cctype>
 #include <cstring>
 
-#include "export/xml_reader.h"
+#include "jobs/project/xml_reader.h"
 #include "src/error.h"
 
 namespace polarform::studio {

@@ -2,7 +2,7 @@
 // cylindrical), degrees, a tolerance or a fixed control net, fairness, base arcs, closure, pole
 // treatment and an optional frame origin and axis instead of the estimated ones — their
 // translation into the fitter's RotationalFitOptions, and their exchange with fit project files
-// (export/project/fit_project.h).
+// (jobs/project/fit_project.h).
 #pragma once
 
 #include <Eigen/Core>
@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "export/project/fit_project.h"
+#include "jobs/project/fit_project.h"
 #include "src/fit/rotational_fit.h"
 
 namespace polarform::studio {

@@ -12,7 +12,7 @@
 #include "export/step_writer.h"
 #include "export/x3d_writer.h"
 #include "src/io/point_cloud.h"
-#include "ui/jobs/fit_outputs.h"
+#include "jobs/fit/fit_outputs.h"
 #include "ui/studio/colors.h"
 #include "ui/studio/guarded.h"
 #include "ui/studio/splitter.h"

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "src/fit/rotational_fit.h"
-#include "ui/jobs/fit_job.h"
+#include "jobs/fit/fit_job.h"
 #include "ui/studio/background_task.h"
 #include "ui/studio/fit_options_panel.h"
 #include "ui/studio/scene_view.h"

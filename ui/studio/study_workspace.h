@@ -1,5 +1,5 @@
-// The study workspace: a tolerance sweep over the cam workspace's current design (ui/jobs
-// study job: quasi-uniform quartic base, RQB base, cubic through sampled points) run in the
+// The study workspace: a tolerance sweep over the cam workspace's current design (the study
+// job of jobs/study: quasi-uniform quartic base, RQB base, cubic through sampled points) run in the
 // background with progress and cancel, shown as control points and arcs against the tolerance,
 // and the max angle deviation of a base arc against its angle (Bae 2002, Fig. 5.4); the study
 // files (CSV, SVG, report.json) can be exported into a folder.
@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "ui/jobs/study_job.h"
+#include "jobs/study/study_job.h"
 #include "ui/studio/background_task.h"
 #include "ui/studio/cam_workspace.h"
 #include "ui/studio/plot_canvas.h"

@@ -4,7 +4,7 @@
 // space; and the conversion tolerance. Edits the project in place.
 #pragma once
 
-#include "export/project/vessel_project.h"
+#include "jobs/project/vessel_project.h"
 
 namespace polarform::studio {
 

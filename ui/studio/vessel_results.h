@@ -10,7 +10,7 @@
 
 #include "designers/vessel/vessel_design.h"
 #include "designers/vessel/vessel_surfaces.h"
-#include "export/project/vessel_project.h"
+#include "jobs/project/vessel_project.h"
 #include "ui/studio/conversion_summary.h"
 
 namespace polarform::studio {

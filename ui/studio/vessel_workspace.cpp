@@ -9,7 +9,7 @@
 #include "export/iges_writer.h"
 #include "export/step_writer.h"
 #include "export/x3d_writer.h"
-#include "ui/jobs/vessel_outputs.h"
+#include "jobs/vessel/vessel_outputs.h"
 #include "ui/studio/colors.h"
 #include "ui/studio/document_kind.h"
 #include "ui/studio/guarded.h"

@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "export/project/vessel_project.h"
+#include "jobs/project/vessel_project.h"
 #include "ui/studio/background_task.h"
 #include "ui/studio/curvature_table.h"
 #include "ui/studio/project_document.h"

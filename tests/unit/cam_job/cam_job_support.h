@@ -18,9 +18,9 @@
 #include <string>
 #include <vector>
 
-#include "export/project/cam_project.h"
-#include "ui/jobs/cam_job.h"
-#include "ui/jobs/cam_outputs.h"
+#include "jobs/project/cam_project.h"
+#include "jobs/cam/cam_job.h"
+#include "jobs/cam/cam_outputs.h"
 
 namespace polarform::cam_job_test {
 

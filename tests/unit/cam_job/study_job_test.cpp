@@ -2,7 +2,7 @@
 // has one row per tolerance with every method's measured error within it, the quartic base needs
 // fewer control points than the RQB base, deviation.csv follows the power laws of DESIGN.md §4.3,
 // the plots and report.json are written, and `polarform study` writes the same tables.
-#include "ui/jobs/study_job.h"
+#include "jobs/study/study_job.h"
 
 #include <gtest/gtest.h>
 

@@ -12,7 +12,7 @@
 #include "designers/cam/contour_polar_function.h"
 #include "designers/cam/displacement_polar_function.h"
 #include "designers/convert/polar_conversion.h"
-#include "export/project/cam_project.h"
+#include "jobs/project/cam_project.h"
 
 namespace polarform {
 namespace {

@@ -7,7 +7,7 @@
 
 #include "designers/cam/contour_polar_function.h"
 #include "designers/convert/tolerance_study.h"
-#include "export/project/cam_project.h"
+#include "jobs/project/cam_project.h"
 #include "src/error.h"
 
 namespace polarform {

@@ -8,9 +8,9 @@
 #include <numbers>
 #include <random>
 
-#include "designers/scan/synthetic_scans.h"
+#include "tests/support/synthetic_scans.h"
 #include "src/error.h"
-#include "ui/jobs/fit_job.h"
+#include "jobs/fit/fit_job.h"
 
 namespace polarform {
 namespace {

@@ -6,11 +6,11 @@
 #include <set>
 #include <string>
 
-#include "designers/scan/synthetic_scans.h"
+#include "tests/support/synthetic_scans.h"
 #include "src/error.h"
 #include "src/io/point_cloud.h"
 #include "tests/unit/fit_job/job_test_support.h"
-#include "ui/jobs/fit_outputs.h"
+#include "jobs/fit/fit_outputs.h"
 
 namespace polarform {
 namespace {

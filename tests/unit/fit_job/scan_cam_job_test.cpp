@@ -13,7 +13,7 @@
 
 #include "src/error.h"
 #include "tests/unit/fit_job/job_test_support.h"
-#include "ui/jobs/scan_cam_outputs.h"
+#include "jobs/scan_cam/scan_cam_outputs.h"
 
 namespace polarform {
 namespace {

@@ -9,7 +9,7 @@
 
 #include "src/error.h"
 #include "tests/unit/fit_job/job_test_support.h"
-#include "ui/jobs/viz_outputs.h"
+#include "jobs/viz/viz_outputs.h"
 
 namespace polarform {
 namespace {

@@ -20,9 +20,9 @@
 #include <typeinfo>
 #include <vector>
 
-#include "export/project/cam_project.h"
-#include "export/project/fit_project.h"
-#include "export/project/vessel_project.h"
+#include "jobs/project/cam_project.h"
+#include "jobs/project/fit_project.h"
+#include "jobs/project/vessel_project.h"
 #include "src/error.h"
 #include "src/io/point_cloud.h"
 #ifdef POLARFORM_HAVE_STUDIO_LOGIC

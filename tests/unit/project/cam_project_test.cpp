@@ -9,7 +9,7 @@
 #include <random>
 #include <sstream>
 
-#include "export/project/cam_project.h"
+#include "jobs/project/cam_project.h"
 #include "src/error.h"
 
 namespace polarform {

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "export/project/fit_project.h"
+#include "jobs/project/fit_project.h"
 #include "src/error.h"
 
 namespace polarform {

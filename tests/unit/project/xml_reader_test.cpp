@@ -1,7 +1,7 @@
 // XmlElementReader: typed attributes with file:line errors and warnings for what nobody read.
 #include <gtest/gtest.h>
 
-#include "export/xml_reader.h"
+#include "jobs/project/xml_reader.h"
 #include "src/error.h"
 
 namespace polarform {

@@ -12,8 +12,8 @@
 #include "designers/cam/cam_design.h"
 #include "designers/scan/nominal_comparison.h"
 #include "designers/scan/scanned_cam.h"
-#include "designers/scan/synthetic_scans.h"
-#include "export/project/cam_project.h"
+#include "tests/support/synthetic_scans.h"
+#include "jobs/project/cam_project.h"
 #include "src/error.h"
 
 namespace polarform {

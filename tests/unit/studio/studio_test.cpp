@@ -28,8 +28,8 @@
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
-#include "export/project/cam_project.h"
-#include "export/project/fit_project.h"
+#include "jobs/project/cam_project.h"
+#include "jobs/project/fit_project.h"
 
 namespace {
 

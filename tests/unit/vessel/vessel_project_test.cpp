@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <numbers>
 
-#include "export/project/vessel_project.h"
+#include "jobs/project/vessel_project.h"
 #include "src/error.h"
 
 namespace polarform {

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "export/project/vessel_project.h"
+#include "jobs/project/vessel_project.h"
 
 namespace polarform::vessel_job_test {
 

@@ -8,7 +8,7 @@
 
 #include "src/error.h"
 #include "tests/unit/vessel_job/vessel_job_support.h"
-#include "ui/jobs/vessel_job.h"
+#include "jobs/vessel/vessel_job.h"
 
 namespace polarform {
 namespace {

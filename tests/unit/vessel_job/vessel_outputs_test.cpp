@@ -8,7 +8,7 @@
 
 #include "src/error.h"
 #include "tests/unit/vessel_job/vessel_job_support.h"
-#include "ui/jobs/vessel_outputs.h"
+#include "jobs/vessel/vessel_outputs.h"
 
 namespace polarform {
 namespace {

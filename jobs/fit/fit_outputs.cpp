@@ -1,0 +1,281 @@
+#include "jobs/fit/fit_outputs.h"
+
+#include <algorithm>
+#include <map>
+#include <numbers>
+
+#include "export/atomic_file.h"
+#include "export/dxf_writer.h"
+#include "export/html_report.h"
+#include "export/iges_writer.h"
+#include "export/number_format.h"
+#include "export/ply_writer.h"
+#include "export/step_writer.h"
+#include "export/x3d_writer.h"
+#include "polarform_version.h"
+#include "src/error.h"
+#include "jobs/fit/fit_plots.h"
+#include "export/colormap.h"
+
+namespace polarform {
+
+namespace {
+
+constexpr double kDeg = 180.0 / std::numbers::pi;
+using json = nlohmann::ordered_json;
+
+json vec(const Eigen::Vector3d& v) { return json::array({v.x(), v.y(), v.z()}); }
+
+json stats(const ErrorStats& e) {
+  return json{{"rms", e.rms}, {"mean", e.mean}, {"max", e.max},
+              {"p95", e.p95}, {"p99", e.p99},   {"count", e.count}};
+}
+
+json frame_json(const LocalFrame& f, const std::string& reason) {
+  return json{{"origin", vec(f.origin)},
+              {"i", vec(f.axes.col(0))},
+              {"j", vec(f.axes.col(1))},
+              {"k", vec(f.axes.col(2))},
+              {"reason", reason}};
+}
+
+json quadric_json(const QuadricFit& q) {
+  static const char* names[10] = {"x2", "y2", "z2", "xy", "yz", "zx", "x", "y", "z", "1"};
+  json c;
+  for (int i = 0; i < 10; ++i) c[names[i]] = q.quadric.q[i];
+  const QuadricClassification& k = q.classification;
+  return json{{"type", to_string(k.type)},
+              {"coefficients", c},
+              {"equation",
+               "x2·x² + y2·y² + z2·z² + xy·xy + yz·yz + zx·zx + x·x + y·y + z·z + 1·1 = 0 (Bae "
+               "2002, eq. (4.1)), input coordinates, |q| = 1"},
+              {"rank_Qu", k.rank_Qu},
+              {"rank_Q", k.rank_Q},
+              {"eigenvalues_Qu_normalised",
+               json::array({k.eigenvalues[0], k.eigenvalues[1], k.eigenvalues[2]})},
+              {"rms_sampson_distance_mm", q.rms_distance}};
+}
+
+std::string pole_name(PoleTreatment t) {
+  switch (t) {
+    case PoleTreatment::automatic:
+      return "automatic";
+    case PoleTreatment::none:
+      return "none";
+    case PoleTreatment::g0:
+      return "g0";
+    case PoleTreatment::g1:
+      return "g1";
+    case PoleTreatment::cap:
+      return "cap";
+  }
+  return "none";
+}
+
+json pole_json(PoleTreatment t, const std::optional<PoleReport>& p,
+               const std::optional<PoleCap>& cap) {
+  json j{{"treatment", pole_name(t)}};
+  if (p)
+    j["measured"] = {{"point", vec(p->point)},
+                     {"gap_mm", p->gap},
+                     {"normal_spread_deg", p->normal_spread * kDeg}};
+  if (cap)
+    j["cap"] = {{"point", vec(cap->point)},
+                {"normal", vec(cap->normal)},
+                {"degree", json::array({cap->surface.degree_u(), cap->surface.degree_v()})},
+                {"boundary_gap_mm", cap->boundary_gap},
+                {"boundary_normal_angle_deg", cap->boundary_normal_angle * kDeg}};
+  return j;
+}
+
+json times_json(const StageTimes& t) {
+  return json{{"read", t.read},   {"frame", t.frame},     {"sync", t.sync},
+              {"check", t.check}, {"knots", t.knots},     {"assembly", t.assembly},
+              {"solve", t.solve}, {"product", t.product}, {"error", t.error},
+              {"total", t.total}};
+}
+
+std::string um(double mm) { return format_trimmed(mm * 1e3, 3) + " µm"; }
+
+std::string html_report(const FitJobResult& r, const json& report, const std::string& preview) {
+  const FitReport& rep = r.report();
+  HtmlReport html("polarform fit report: " + r.input.filename().string());
+  const bool curve = r.polar.has_value();
+  const std::string degrees = curve ? std::to_string(r.curve->degree())
+                                    : "(" + std::to_string(rep.nurbs_degree_u) + ", " +
+                                          std::to_string(rep.nurbs_degree_v) + ")";
+  const std::string net =
+      curve ? std::to_string(r.curve->size())
+            : std::to_string(rep.nurbs_size_u) + " × " + std::to_string(rep.nurbs_size_v);
+  html.add_key_figures({{"method", r.method},
+                        {"points", std::to_string(r.points.cols())},
+                        {"NURBS degree", degrees},
+                        {"control points", net},
+                        {"rms distance", um(rep.error.rms)},
+                        {"p95 / p99 distance", um(rep.error.p95) + " / " + um(rep.error.p99)},
+                        {"max distance", um(rep.error.max)}});
+  html.add_heading("Method");
+  html.add_paragraph(r.reason);
+  html.add_paragraph("Frame: " + report["frame"]["reason"].get<std::string>());
+  if (report.contains("quadric") && !report["quadric"].is_null())
+    html.add_paragraph("Best-fit quadric: " + report["quadric"]["type"].get<std::string>() +
+                       " (rms Sampson distance " +
+                       um(report["quadric"]["rms_sampson_distance_mm"].get<double>()) + ").");
+  html.add_heading("Deviation");
+  html.add_svg(preview,
+               "Signed closest-point distances of the input points from the fitted geometry "
+               "(+ away from the centre or axis).");
+  const StageTimes& t = rep.times;
+  html.add_table({"stage", "seconds"}, {{"read", format_trimmed(t.read, 4)},
+                                        {"frame", format_trimmed(t.frame, 4)},
+                                        {"sync", format_trimmed(t.sync, 4)},
+                                        {"check", format_trimmed(t.check, 4)},
+                                        {"knots", format_trimmed(t.knots, 4)},
+                                        {"assembly", format_trimmed(t.assembly, 4)},
+                                        {"solve", format_trimmed(t.solve, 4)},
+                                        {"product", format_trimmed(t.product, 4)},
+                                        {"error", format_trimmed(t.error, 4)},
+                                        {"total", format_trimmed(t.total, 4)}});
+  html.add_file_list(report["files"].get<std::vector<std::string>>());
+  return html.html();
+}
+
+}  // namespace
+
+double deviation_color_limit(const FitJobResult& r) { return std::max(r.report().error.p99, 1e-9); }
+
+json fit_report_json(const FitJobResult& r, const std::vector<std::string>& files) {
+  const FitReport& rep = r.report();
+  json j;
+  j["polarform_version"] = POLARFORM_VERSION;
+  j["command"] = "fit";
+  j["input"] = {{"file", r.input.string()}, {"points", r.points.cols()}, {"dropped", r.dropped}};
+  j["method"] = r.method;
+  j["reason"] = r.reason;
+  if (r.polar) {
+    const PolarCurveFit& f = *r.polar;
+    j["quadric"] = nullptr;
+    j["frame"] = frame_json(r.plane.frame,
+                            r.plane.snapped ? "the plane z = const of the input (x, y kept)"
+                                            : "best-fit plane of the points (total least squares)");
+    j["plane"] = {{"rms_distance_mm", r.plane.rms_distance},
+                  {"max_distance_mm", r.plane.max_distance}};
+    j["centre"] = vec(r.plane.frame.to_global(Eigen::Vector3d(f.centre.x(), f.centre.y(), 0.0)));
+    j["centre_reason"] = f.centre_reason;
+    j["closed"] = f.closed;
+    j["degrees"] = {{"F", json::array({rep.degree_v})},
+                    {"nurbs", json::array({r.curve->degree()})}};
+    j["control_net"] = {{"F", json::array({rep.size_v})},
+                        {"nurbs", json::array({r.curve->size()})}};
+  } else {
+    const RotationalFit& f = *r.surface;
+    const FrameEstimate& fr = f.frame();
+    j["quadric"] = fr.quadric ? quadric_json(*fr.quadric) : json(nullptr);
+    j["frame"] = frame_json(fr.frame, fr.reason);
+    if (f.spherical) {
+      const SphericalFit& s = *f.spherical;
+      j["closed"] = s.closed;
+      if (s.closed)
+        j["seam"] = {{"gap_mm", s.seam.gap}, {"normal_angle_deg", s.seam.normal_angle * kDeg}};
+      j["poles"] = {{"north", pole_json(s.north, s.north_pole, s.north_cap)},
+                    {"south", pole_json(s.south, s.south_pole, s.south_cap)}};
+    } else {
+      const CylindricalFit& c = *f.cylindrical;
+      j["closed"] = c.closed;
+      if (c.closed)
+        j["seam"] = {{"gap_mm", c.seam.gap}, {"normal_angle_deg", c.seam.normal_angle * kDeg}};
+      j["height_range_mm"] = json::array({c.base.z_start(), c.base.z_end()});
+    }
+    j["degrees"] = {{"F", json::array({rep.degree_u, rep.degree_v})},
+                    {"nurbs", json::array({rep.nurbs_degree_u, rep.nurbs_degree_v})}};
+    j["control_net"] = {{"F", json::array({rep.size_u, rep.size_v})},
+                        {"nurbs", json::array({rep.nurbs_size_u, rep.nurbs_size_v})}};
+  }
+  j["fairness"] = fairness_word(r.fairness);
+  if (r.fairness != FairnessOptions::Mode::gcv) j["fairness_weight"] = r.fairness_weight;
+  j["fairness_lambda"] = rep.lambda;
+  j["base"] = r.base == ArcKind::quartic ? "quartic" : "rqb";
+  j["refinements"] = rep.refinements;
+  j["error_mm"] = stats(rep.error);
+  j["error_mm"]["unconverged_foot_points"] = rep.unconverged;
+  j["error_kind"] = "true closest-point distance from each input point to the fitted geometry";
+  j["radial_error_mm"] = stats(rep.radial);
+  j["deviation_color_limit_mm"] = deviation_color_limit(r);
+  j["timings_s"] = times_json(rep.times);
+  j["files"] = files;
+  return j;
+}
+
+std::vector<std::string> write_fit_outputs(const FitJobResult& r,
+                                           const std::filesystem::path& dir) {
+  std::map<std::string, std::string> content;
+  const std::string stem = r.polar ? "curve" : "surface";
+  const std::string name = r.input.stem().string();
+  IgesHeader iges;
+  iges.description = "polarform " + std::string(POLARFORM_VERSION) + " " + r.method + " fit of " +
+                     r.input.filename().string();
+  iges.file_name = stem + ".igs";
+  StepHeader step;
+  step.description = iges.description;
+  step.file_name = stem + ".stp";
+  IgesWriter igs;
+  StepWriter stp(name);
+  X3dWriter x3d;
+  if (r.polar) {
+    igs.add(*r.curve, "FITTED CURVE");
+    stp.add(*r.curve, "fitted curve");
+    x3d.add(*r.curve, "curve");
+    DxfWriter dxf(DxfOptions{std::max(10, r.curve->degree()), 1e-6});
+    dxf.add(*r.curve, "FITTED_CURVE");
+    content["curve.dxf"] = dxf.str();
+  } else {
+    igs.add(r.surface->surface(), "FITTED SURFACE");
+    stp.add(r.surface->surface(), "fitted surface");
+    x3d.add(r.surface->surface(), "surface");
+    if (r.surface->spherical) {
+      const SphericalFit& s = *r.surface->spherical;
+      const std::pair<const std::optional<PoleCap>*, std::string> caps[] = {
+          {&s.north_cap, "north"}, {&s.south_cap, "south"}};
+      for (const auto& [cap, which] : caps)
+        if (*cap) {
+          igs.add((*cap)->surface, which + " cap");
+          stp.add((*cap)->surface, which + " cap");
+          x3d.add((*cap)->surface, which + "_cap");
+        }
+    }
+  }
+  content[stem + ".igs"] = igs.str(iges);
+  content[stem + ".stp"] = stp.str(step);
+  content[stem + ".x3d"] =
+      x3d.str("polarform " + r.method + " fit of " + r.input.filename().string());
+  const std::string preview = fit_preview_figure(r).svg();
+  content["preview.svg"] = preview;
+
+  const Eigen::VectorXd& d = r.report().signed_distance;
+  if (d.size() != r.points.cols())
+    throw NumericalError("fit: " + std::to_string(d.size()) + " deviations for " +
+                         std::to_string(r.points.cols()) + " points");
+  const double limit = deviation_color_limit(r);
+  std::vector<std::array<unsigned char, 3>> colors(static_cast<std::size_t>(d.size()));
+  std::vector<double> deviation(colors.size());
+  for (Eigen::Index k = 0; k < d.size(); ++k) {
+    colors[static_cast<std::size_t>(k)] = to_rgb8(diverging_color(d[k], limit));
+    deviation[static_cast<std::size_t>(k)] = d[k];
+  }
+
+  std::vector<std::string> files;
+  for (const auto& [file, text] : content) files.push_back(file);
+  files.push_back("deviation.ply");
+  files.push_back("report.html");
+  files.push_back("report.json");
+  std::sort(files.begin(), files.end());
+  const json report = fit_report_json(r, files);
+  content["report.json"] = report.dump(2) + "\n";
+  content["report.html"] = html_report(r, report, preview);
+
+  write_files_atomically(dir, content);
+  write_ply(dir / "deviation.ply", r.points, &colors, &deviation, "deviation");
+  return files;
+}
+
+}  // namespace polarform

@@ -1,0 +1,275 @@
+#include "jobs/project/cam_project.h"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+
+#include "export/atomic_file.h"
+#include "export/xml_escape.h"
+#include "jobs/project/xml_reader.h"
+#include "src/error.h"
+#include "src/message_text.h"
+
+namespace polarform {
+
+namespace {
+
+using tinyxml2::XMLElement;
+constexpr double kDegree = std::numbers::pi / 180;
+
+std::string number(double x) {
+  char buf[32];
+  const auto result = std::to_chars(buf, buf + sizeof buf, x);
+  return std::string(buf, result.ptr);
+}
+
+// An angle in degrees for messages, to 12 significant digits: 240° reads "240", not the
+// 239.99999999999997 that radians → degrees gives back.
+std::string degrees_text(double radians) {
+  char buf[32];
+  const auto result =
+      std::to_chars(buf, buf + sizeof buf, radians / kDegree, std::chars_format::general, 12);
+  return std::string(buf, result.ptr) + "°";
+}
+
+// The degree value whose conversion d·π/180 gives back exactly `radians` (searched among the
+// neighbours of the rounded quotient), so that save → load is exact.
+double degrees_for(double radians) {
+  double d = radians / kDegree;
+  for (int k = 0; k < 8 && d * kDegree != radians; ++k)
+    d = std::nextafter(d, d * kDegree < radians ? HUGE_VAL : -HUGE_VAL);
+  return d;
+}
+
+void collect(const XmlElementReader& r, std::vector<std::string>& warnings) {
+  const std::vector<std::string> w = r.warnings();
+  warnings.insert(warnings.end(), w.begin(), w.end());
+}
+
+// The constraint children of a polynomial or B-spline segment; order = highest derivative given.
+void read_constraints(const XmlElementReader& seg, SegmentSpec& spec, const std::string& file,
+                      std::vector<std::string>& warnings) {
+  const XMLElement* start = seg.child("start");
+  const XMLElement* end = seg.child("end");
+  if (!start && !end) return;  // Bae 2002, eq. (5.1): v = a = 0 at both ends
+  int order = 0;
+  auto read_end = [&](const XMLElement* e, EndpointDerivatives& d) {
+    if (!e) return;
+    const XmlElementReader r(e, file);
+    if (r.has("v")) d.velocity = r.number("v"), order = std::max(order, 1);
+    if (r.has("a")) d.acceleration = r.number("a"), order = std::max(order, 2);
+    if (r.has("j")) d.jerk = r.number("j"), order = std::max(order, 3);
+    collect(r, warnings);
+  };
+  read_end(start, spec.at_start);
+  read_end(end, spec.at_end);
+  spec.constrained_order = order;
+}
+
+SegmentSpec read_segment(const XmlElementReader& r, double from, double level,
+                         const std::string& file, std::vector<std::string>& warnings) {
+  SegmentSpec s;
+  s.kind = parse_segment_kind(r.choice("kind", {"dwell", "rise", "return"}));
+  s.name = r.text("name", "");
+  s.start = r.number("from", from / kDegree) * kDegree;
+  s.end = r.number("to") * kDegree;
+  if (!(s.end > s.start))
+    r.fail("to", "an angle after the segment start " + degrees_text(s.start));
+  if (s.kind == SegmentKind::Dwell) return s;
+  try {
+    s.law = parse_motion_law(r.text("law", "cycloidal"));
+  } catch (const InputError& e) {
+    r.fail("law", std::string("a motion law (") + e.what() + ")");
+  }
+  if (s.kind == SegmentKind::Rise)
+    s.lift = r.positive("lift");
+  else
+    s.lift = r.positive("lift", level);
+  if (!(s.lift > 0)) r.fail("lift", "a lift > 0 mm (the follower is already at the base circle)");
+  if (s.law == MotionLaw::Polynomial || s.law == MotionLaw::BSpline)
+    read_constraints(r, s, file, warnings);
+  if (s.law == MotionLaw::BSpline) {
+    s.bspline.degree = r.integer("degree", s.bspline.degree);
+    s.bspline.control_values = r.integer("control-values", s.bspline.control_values);
+    s.bspline.minimised_derivative = r.integer("minimise", s.bspline.minimised_derivative);
+  }
+  return s;
+}
+
+CamDesign read_cam(const XmlElementReader& r, const std::string& file,
+                   std::vector<std::string>& warnings) {
+  CamDesign d;
+  d.type = r.choice("type", {"plate", "cylindrical"}, "plate") == "plate" ? CamType::Plate
+                                                                          : CamType::Cylindrical;
+  const std::string follower = r.choice("follower", {"knife-edge", "roller", "flat-faced"});
+  d.follower.kind = follower == "knife-edge" ? FollowerKind::KnifeEdge
+                    : follower == "roller"   ? FollowerKind::Roller
+                                             : FollowerKind::FlatFaced;
+  if (d.follower.kind == FollowerKind::Roller) d.follower.roller_radius = r.positive("roller-radius");
+  d.follower.offset = r.number("offset", 0.0);
+  d.rotation = r.choice("rotation", {"ccw", "cw"}, "ccw") == "ccw" ? Rotation::CounterClockwise
+                                                                    : Rotation::Clockwise;
+  d.rpm = r.positive("rpm", 300.0);
+  if (d.type == CamType::Plate) {
+    d.base_radius = r.positive("base-radius");
+  } else {
+    d.base_radius = r.positive("base-radius", 0.0, true);
+    d.cylinder_radius = r.positive("cylinder-radius");
+    d.z0 = r.number("z0", 0.0);
+    if (d.follower.kind != FollowerKind::Roller)
+      r.fail("follower", "a roller follower for a cylindrical cam");
+    d.groove_depth = r.positive("groove-depth", 0.0, true);
+    // The walls' inner radius must keep the contact single-valued (groove_wall.h).
+    const double inner_limit = std::sqrt(2.0) * d.follower.roller_radius;
+    if (d.groove_depth > 0 && !(d.cylinder_radius - d.groove_depth / 2 >= inner_limit))
+      r.fail("groove-depth", "a depth whose inner radius cylinder-radius − depth/2 is at least "
+                             "√2·roller-radius = " + number_text(inner_limit) + " mm (at most " +
+                             number_text(2 * (d.cylinder_radius - inner_limit)) + " mm)");
+  }
+
+  const std::vector<const XMLElement*> segments = r.children("segment");
+  if (segments.empty()) throw InputError(r.where() + ": no <segment> elements");
+  double at = 0.0, level = 0.0;
+  for (const XMLElement* e : segments) {
+    const XmlElementReader s(e, file);
+    SegmentSpec spec = read_segment(s, at, level, file, warnings);
+    if (std::abs(spec.start - at) > 1e-9)
+      throw InputError(s.where() + ": segment starts at " + degrees_text(spec.start) +
+                       " but the previous one ends at " + degrees_text(at) + " (" +
+                       (spec.start > at ? "a gap" : "an overlap") + ")");
+    at = spec.end;
+    level += spec.kind == SegmentKind::Rise ? spec.lift : spec.kind == SegmentKind::Return ? -spec.lift : 0;
+    collect(s, warnings);
+    d.segments.push_back(std::move(spec));
+  }
+  if (std::abs(at - 2 * std::numbers::pi) > 1e-9)
+    throw InputError(r.where() + ": the segments end at " + degrees_text(at) +
+                     "; they must cover 0° to 360°");
+  try {
+    make_program(d);
+  } catch (const InputError& e) {
+    throw InputError(r.where() + ": " + e.what());
+  }
+  return d;
+}
+
+void read_conversion(const XmlElementReader& r, CamProject& p) {
+  p.conversion.tolerance = r.positive("tolerance", p.conversion.tolerance);
+  if (p.conversion.tolerance < kMinTolerance)
+    r.fail("tolerance", "a tolerance >= " + number(kMinTolerance) + " mm");
+  p.conversion.base = r.choice("base", {"quasi-uniform", "rqb"}, "quasi-uniform") == "rqb"
+                          ? ArcKind::rqb
+                          : ArcKind::quartic;
+  p.conversion.alpha = r.choice("alpha", {"minimax", "printed"}, "minimax") == "printed"
+                           ? AlphaRule::printed
+                           : AlphaRule::minimax;
+  if (r.has("max-degree")) {
+    const int degree = r.integer("max-degree", 0);
+    if (degree < 1) r.fail("max-degree", "an integer >= 1, or empty for the exact degree");
+    p.max_degree = degree;
+  } else {
+    r.text("max-degree", "");  // an empty value means "exact degree"
+  }
+}
+
+}  // namespace
+
+CamProject parse_cam_project(const std::string& text, const std::string& file,
+                             std::vector<std::string>& warnings) {
+  const XmlDocument doc(text, file);
+  const XmlElementReader root(doc.root(), file);
+  if (std::string(doc.root()->Name()) != "polarform")
+    throw InputError(root.where() + ": expected the root element <polarform>");
+  const int version = root.integer("version", 1);
+  if (version != 1) root.fail("version", "1 (the only project version this polarform reads)");
+  const XMLElement* cam = root.child("cam");
+  if (!cam) throw InputError(root.where() + ": no <cam> element");
+  CamProject p;
+  const XmlElementReader cam_reader(cam, file);
+  p.cam = read_cam(cam_reader, file, warnings);
+  collect(cam_reader, warnings);
+  if (const XMLElement* conversion = root.child("conversion")) {
+    const XmlElementReader r(conversion, file);
+    read_conversion(r, p);
+    collect(r, warnings);
+  }
+  collect(root, warnings);
+  return p;
+}
+
+CamProject read_cam_project(const std::filesystem::path& file, std::vector<std::string>& warnings) {
+  if (!std::filesystem::is_regular_file(file)) throw InputError(file.string() + ": no such file");
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return parse_cam_project(text.str(), file.string(), warnings);
+}
+
+std::string cam_project_xml(const CamProject& p) {
+  std::ostringstream out;
+  const CamDesign& d = p.cam;
+  auto attr = [&](const char* name, const std::string& value) {
+    out << ' ' << name << "=\"" << xml_escape(value) << '"';
+  };
+  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      << "<!-- polarform cam project: lengths in mm, angles in degrees, endpoint derivatives per "
+         "radian -->\n<polarform version=\"1\">\n  <cam";
+  attr("type", std::string(cam_type_name(d.type)));
+  attr("follower", std::string(follower_kind_name(d.follower.kind)));
+  if (d.type == CamType::Plate || d.base_radius > 0) attr("base-radius", number(d.base_radius));
+  if (d.follower.kind == FollowerKind::Roller) attr("roller-radius", number(d.follower.roller_radius));
+  attr("offset", number(d.follower.offset));
+  attr("rotation", std::string(rotation_name(d.rotation)));
+  attr("rpm", number(d.rpm));
+  if (d.type == CamType::Cylindrical) {
+    attr("cylinder-radius", number(d.cylinder_radius));
+    attr("z0", number(d.z0));
+    if (d.groove_depth > 0) attr("groove-depth", number(d.groove_depth));
+  }
+  out << ">\n";
+  for (const SegmentSpec& s : d.segments) {
+    out << "    <segment";
+    attr("kind", std::string(segment_kind_name(s.kind)));
+    if (!s.name.empty()) attr("name", s.name);
+    if (s.kind != SegmentKind::Dwell) {
+      attr("law", std::string(motion_law_name(s.law)));
+      attr("lift", number(s.lift));
+    }
+    attr("from", number(degrees_for(s.start)));
+    attr("to", number(degrees_for(s.end)));
+    const bool constrained = s.law == MotionLaw::Polynomial || s.law == MotionLaw::BSpline;
+    if (s.kind != SegmentKind::Dwell && s.law == MotionLaw::BSpline) {
+      attr("degree", std::to_string(s.bspline.degree));
+      attr("control-values", std::to_string(s.bspline.control_values));
+      attr("minimise", std::to_string(s.bspline.minimised_derivative));
+    }
+    if (s.kind == SegmentKind::Dwell || !constrained) {
+      out << "/>\n";
+      continue;
+    }
+    out << ">\n";
+    for (auto [tag, e] : {std::pair{"start", &s.at_start}, std::pair{"end", &s.at_end}}) {
+      out << "      <" << tag;
+      if (s.constrained_order >= 1) attr("v", number(e->velocity));
+      if (s.constrained_order >= 2) attr("a", number(e->acceleration));
+      if (s.constrained_order >= 3) attr("j", number(e->jerk));
+      out << "/>\n";
+    }
+    out << "    </segment>\n";
+  }
+  out << "  </cam>\n  <conversion";
+  attr("tolerance", number(p.conversion.tolerance));
+  attr("base", p.conversion.base == ArcKind::rqb ? "rqb" : "quasi-uniform");
+  attr("alpha", p.conversion.alpha == AlphaRule::printed ? "printed" : "minimax");
+  attr("max-degree", p.max_degree ? std::to_string(*p.max_degree) : "");
+  out << "/>\n</polarform>\n";
+  return out.str();
+}
+
+void write_cam_project(const CamProject& project, const std::filesystem::path& file) {
+  write_file_atomically(file, cam_project_xml(project));
+}
+
+}  // namespace polarform

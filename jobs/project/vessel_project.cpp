@@ -1,0 +1,238 @@
+#include "jobs/project/vessel_project.h"
+
+#include <charconv>
+#include <numbers>
+#include <sstream>
+
+#include "designers/convert/polar_conversion.h"
+#include "export/atomic_file.h"
+#include "jobs/project/xml_reader.h"
+#include "src/error.h"
+#include "src/nurbs/knots.h"
+
+namespace polarform {
+
+namespace {
+
+using tinyxml2::XMLElement;
+
+std::string number(double x) {
+  char buf[32];
+  const auto result = std::to_chars(buf, buf + sizeof buf, x);
+  return std::string(buf, result.ptr);
+}
+
+// Reads every element through an XmlElementReader and collects what nobody read.
+class Reader {
+ public:
+  Reader(std::string file, std::vector<std::string>& warnings)
+      : file_(std::move(file)), warnings_(warnings) {}
+
+  template <class F>
+  void visit(const XMLElement* e, F&& read) {
+    const XmlElementReader r(e, file_);
+    read(r);
+    const std::vector<std::string> w = r.warnings();
+    warnings_.insert(warnings_.end(), w.begin(), w.end());
+  }
+
+ private:
+  std::string file_;
+  std::vector<std::string>& warnings_;
+};
+
+CurvatureEntry read_curvature(const XmlElementReader& r) {
+  CurvatureEntry c;
+  c.theta_deg = r.number("theta");
+  if (!(c.theta_deg >= 0.0 && c.theta_deg <= 180.0)) r.fail("theta", "an angle in [0, 180] degrees");
+  if (r.has("kappa") && r.has("radius")) r.fail("radius", "either kappa or radius, not both");
+  c.is_radius = r.has("radius");
+  c.value = r.number(c.is_radius ? "radius" : "kappa");
+  if (c.is_radius && c.value == 0.0) r.fail("radius", "a non-zero radius of curvature in mm");
+  c.weight = r.positive("weight", 1.0);
+  return c;
+}
+
+EndCondition read_end(const XmlElementReader& r) {
+  EndCondition c;
+  if (r.has("r")) c.r = r.positive("r");
+  c.dr = r.optional_number("dr");
+  c.ddr = r.optional_number("ddr");
+  return c;
+}
+
+HeadPreset read_head(const XmlElementReader& r, double radius, int& targets) {
+  HeadPreset h;
+  const std::string preset = r.choice("preset", {"hemispherical", "ellipsoidal", "torispherical"});
+  if (preset == "ellipsoidal") {
+    h.kind = HeadKind::ellipsoidal;
+    h.ratio = r.positive("ratio", 2.0);
+  } else if (preset == "torispherical") {
+    h.kind = HeadKind::torispherical;
+    h.crown = r.positive("crown");
+    h.knuckle = r.positive("knuckle");
+    if (!(h.knuckle < radius))
+      r.fail("knuckle", "a knuckle radius below the vessel radius " + number(radius) + " mm");
+    if (!(h.crown >= radius))
+      r.fail("crown", "a crown radius at least the vessel radius " + number(radius) + " mm");
+  }
+  targets = r.integer("targets", targets);
+  if (targets < 1) r.fail("targets", "a number of curvature targets >= 1");
+  return h;
+}
+
+SynthesisSettings read_synthesis(const XmlElementReader& r) {
+  SynthesisSettings s;
+  s.degree = r.integer("degree", s.degree);
+  if (s.degree < 3 || s.degree > kMaxDegree)
+    r.fail("degree", "an integer in [3, " + std::to_string(kMaxDegree) + "]");
+  s.ordinates = r.integer("ordinates", s.ordinates);
+  if (s.ordinates < s.degree + 1)
+    r.fail("ordinates", "an integer >= degree + 1 = " + std::to_string(s.degree + 1));
+  s.smoothing = r.positive("smoothing", s.smoothing, true);
+  s.symmetric = r.choice("symmetric", {"true", "false"}, s.symmetric ? "true" : "false") == "true";
+  s.max_iterations = r.integer("max-iterations", s.max_iterations);
+  if (s.max_iterations < 1) r.fail("max-iterations", "an integer >= 1");
+  return s;
+}
+
+void read_vessel(const XMLElement* e, Reader& reader, VesselProject& p) {
+  reader.visit(e, [&](const XmlElementReader& r) {
+    VesselDesign& d = p.design;
+    d.radius = r.positive("radius");
+    d.length = r.positive("length");
+    d.thickness = r.positive("thickness");
+    d.pressure = r.positive("pressure");
+    for (const XMLElement* c : r.children("curvature"))
+      reader.visit(c, [&](const XmlElementReader& cr) { p.curvatures.push_back(read_curvature(cr)); });
+    for (const XMLElement* c : r.children("end"))
+      reader.visit(c, [&](const XmlElementReader& er) {
+        std::optional<EndCondition>& end = er.choice("at", {"A", "B"}) == "A" ? d.end_a : d.end_b;
+        if (end) er.fail("at", "each end at most once");
+        end = read_end(er);
+      });
+    for (const XMLElement* h : r.children("head"))
+      reader.visit(h, [&](const XmlElementReader& hr) {
+        if (d.preset) throw InputError(hr.where() + ": expected one <head> per vessel");
+        d.preset = read_head(hr, d.radius, d.preset_targets);
+      });
+    const std::vector<const XMLElement*> settings = r.children("synthesis");
+    for (const XMLElement* s : settings)
+      reader.visit(s, [&](const XmlElementReader& sr) {
+        if (s != settings.front())
+          throw InputError(sr.where() + ": expected one <synthesis> per vessel");
+        d.synthesis = read_synthesis(sr);
+      });
+    if (p.curvatures.empty() && !d.preset)
+      throw InputError(r.where() + ": expected <curvature> elements or a <head preset>");
+  });
+}
+
+VesselProject read_document(const XmlDocument& doc, std::vector<std::string>& warnings) {
+  VesselProject p;
+  Reader reader(doc.file(), warnings);
+  const XMLElement* root = doc.root();
+  if (std::string(root->Name()) == "vessel") {
+    read_vessel(root, reader, p);
+    return p;
+  }
+  reader.visit(root, [&](const XmlElementReader& r) {
+    if (std::string(root->Name()) != "polarform")
+      throw InputError(r.where() + ": expected a <polarform> or <vessel> root element");
+    r.choice("version", {"1"}, "1");
+    const XMLElement* vessel = r.child("vessel");
+    if (!vessel) throw InputError(r.where() + ": expected a <vessel> element");
+    read_vessel(vessel, reader, p);
+    if (const XMLElement* conversion = r.child("conversion"))
+      reader.visit(conversion, [&](const XmlElementReader& cr) {
+        p.tolerance = cr.positive("tolerance", p.tolerance);
+        if (p.tolerance < kMinTolerance)
+          cr.fail("tolerance", "a tolerance >= " + number(kMinTolerance) + " mm");
+      });
+  });
+  return p;
+}
+
+void attribute(std::ostream& out, const char* name, const std::string& value) {
+  out << ' ' << name << "=\"" << value << '"';
+}
+
+void attribute(std::ostream& out, const char* name, double value) {
+  attribute(out, name, number(value));
+}
+
+}  // namespace
+
+VesselDesign to_design(const VesselProject& project) {
+  VesselDesign d = project.design;
+  d.targets.clear();
+  for (const CurvatureEntry& c : project.curvatures)
+    d.targets.push_back({c.theta_deg * std::numbers::pi / 180,
+                         c.is_radius ? 1.0 / c.value : c.value, c.weight});
+  return d;
+}
+
+VesselProject read_vessel_project(const std::filesystem::path& file,
+                                  std::vector<std::string>& warnings) {
+  return read_document(XmlDocument(file), warnings);
+}
+
+VesselProject parse_vessel_project(const std::string& text, const std::string& file,
+                                   std::vector<std::string>& warnings) {
+  return read_document(XmlDocument(text, file), warnings);
+}
+
+std::string vessel_project_xml(const VesselProject& p) {
+  const VesselDesign& d = p.design;
+  std::ostringstream out;
+  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<polarform version=\"1\">\n  <vessel";
+  attribute(out, "radius", d.radius);
+  attribute(out, "length", d.length);
+  attribute(out, "thickness", d.thickness);
+  attribute(out, "pressure", d.pressure);
+  out << ">\n";
+  for (const CurvatureEntry& c : p.curvatures) {
+    out << "    <curvature";
+    attribute(out, "theta", c.theta_deg);
+    attribute(out, c.is_radius ? "radius" : "kappa", c.value);
+    attribute(out, "weight", c.weight);
+    out << "/>\n";
+  }
+  for (const auto& [name, end] : {std::pair{"A", &d.end_a}, std::pair{"B", &d.end_b}}) {
+    if (!*end) continue;
+    out << "    <end";
+    attribute(out, "at", std::string(name));
+    if ((*end)->r) attribute(out, "r", *(*end)->r);
+    if ((*end)->dr) attribute(out, "dr", *(*end)->dr);
+    if ((*end)->ddr) attribute(out, "ddr", *(*end)->ddr);
+    out << "/>\n";
+  }
+  if (d.preset) {
+    out << "    <head";
+    attribute(out, "preset", std::string(head_kind_name(d.preset->kind)));
+    if (d.preset->kind == HeadKind::ellipsoidal) attribute(out, "ratio", d.preset->ratio);
+    if (d.preset->kind == HeadKind::torispherical) {
+      attribute(out, "crown", d.preset->crown);
+      attribute(out, "knuckle", d.preset->knuckle);
+    }
+    attribute(out, "targets", std::to_string(d.preset_targets));
+    out << "/>\n";
+  }
+  const SynthesisSettings& s = d.synthesis;
+  out << "    <synthesis";
+  attribute(out, "degree", std::to_string(s.degree));
+  attribute(out, "ordinates", std::to_string(s.ordinates));
+  attribute(out, "smoothing", s.smoothing);
+  attribute(out, "symmetric", std::string(s.symmetric ? "true" : "false"));
+  attribute(out, "max-iterations", std::to_string(s.max_iterations));
+  out << "/>\n  </vessel>\n  <conversion";
+  attribute(out, "tolerance", p.tolerance);
+  out << "/>\n</polarform>\n";
+  return out.str();
+}
+
+void write_vessel_project(const VesselProject& project, const std::filesystem::path& file) {
+  write_file_atomically(file, vessel_project_xml(project));
+}
+
+}  // namespace polarform

@@ -1,0 +1,51 @@
+// The scan-cam job: what `polarform scan-cam` computes to inspect a manufactured plate cam or to
+// recover a lost design from a 2D profile scan or a 3D scan — read the scan (and the nominal cam
+// project when given), run the scanned-cam pipeline (designers/scan/scanned_cam.h) and compare it
+// with the nominal. Computing writes nothing.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "designers/scan/nominal_comparison.h"
+#include "designers/scan/scanned_cam.h"
+#include "jobs/project/cam_project.h"
+#include "src/fit/parallel.h"
+
+namespace polarform {
+
+struct ScanCamJobOptions {
+  std::optional<Eigen::Vector3d> center;         // a point on the axis (X, Y, 0 for a 2D centre)
+  std::optional<Eigen::Vector3d> axis;           // estimated when absent
+  std::optional<std::filesystem::path> nominal;  // cam project (XML)
+  std::optional<double> tolerance;               // mm: profile tolerance band about the nominal
+  // The follower that reads the displacement when there is no nominal (the nominal's otherwise).
+  std::optional<Follower> follower;
+  std::optional<Rotation> rotation;
+  bool skip_bad = false;
+  int threads = 2;
+  ProgressFn read_progress;
+};
+
+struct ScanCamJobResult {
+  std::filesystem::path input;
+  std::size_t points = 0, dropped = 0;
+  std::filesystem::path nominal_file;  // empty without a nominal
+  std::optional<CamProject> nominal_project;
+  std::optional<PlateCam> nominal;
+  std::vector<std::string> warnings;  // from reading the nominal project
+  ScannedCam scan;
+  std::optional<NominalComparison> comparison;
+  std::optional<double> tolerance;
+  bool within_tolerance = true;  // the profile's normal deviation within ±tolerance
+  std::string follower_source;   // "nominal design" or "options"
+  double read_seconds = 0.0, seconds = 0.0;
+};
+
+// Throws InputError for a bad scan, nominal project, or option combination (follower options
+// with a nominal, a tolerance without one, a cylindrical nominal) or what the pipeline refuses.
+ScanCamJobResult run_scan_cam_job(const std::filesystem::path& scan,
+                                  const ScanCamJobOptions& options = {});
+
+}  // namespace polarform

@@ -1,0 +1,145 @@
+#include "jobs/vessel/vessel_plots.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "export/number_format.h"
+
+namespace polarform {
+
+namespace {
+
+constexpr double kDeg = 180 / std::numbers::pi;
+const char* kDesignColor = "#0072b2";
+const char* kPresetColor = "#999999";
+const char* kFlagColor = "#d55e00";
+
+Series curvature_series(std::string label, const std::vector<CurvatureSample>& samples,
+                        Series::Style style, std::string color) {
+  Series s{std::move(label), {}, {}, style, std::move(color)};
+  for (const CurvatureSample& c : samples) s.x.push_back(c.theta * kDeg), s.y.push_back(c.kappa);
+  return s;
+}
+
+// σ_φ or σ_θ against the meridian arc length s (cylinder first, then junction A to the apex).
+Series stress_series(std::string label, const StressProfile& p, bool hoop, Series::Style style,
+                     std::string color) {
+  Series s{std::move(label), {}, {}, style, std::move(color)};
+  for (const StressSample& k : p.samples)
+    s.x.push_back(k.s), s.y.push_back(hoop ? k.hoop_stress : k.meridional_stress);
+  return s;
+}
+
+void mark_compressive_bands(Plot& plot, const StressProfile& p, const std::string& whose,
+                            std::string color) {
+  for (std::size_t i = 0; i < p.compressive_hoop.size(); ++i) {
+    const CompressiveBand& b = p.compressive_hoop[i];
+    plot.add_band(b.s_from, b.s_to, i == 0 ? "compressive hoop stress (" + whose + ")" : "", color);
+    plot.add_annotation(0.5 * (b.s_from + b.s_to), b.min_hoop_stress,
+                        "σθ " + format_trimmed(b.min_hoop_stress, 1) + " MPa");
+  }
+}
+
+// The meridian (x, z) = R(θ)(cos θ, sin θ) of a polar function at count + 1 angles.
+Series meridian_series(std::string label, const PolarFunction& f, int count, Series::Style style,
+                       std::string color) {
+  Series s{std::move(label), {}, {}, style, std::move(color)};
+  for (int i = 0; i <= count; ++i) {
+    const double theta = f.start + (f.end - f.start) * i / count, R = f(theta);
+    s.x.push_back(R * std::cos(theta)), s.y.push_back(R * std::sin(theta));
+  }
+  return s;
+}
+
+}  // namespace
+
+Figure curvature_figure(const VesselJobResult& r) {
+  const VesselSolution& s = r.solution;
+  Figure f(900, 680);
+  f.title = "Curvature along the head: prescribed targets and the synthesised profile";
+  f.shared_x = true;
+  Plot& kappa = f.add_panel();
+  kappa.x_label = "polar angle θ [deg]";
+  kappa.y_label = "curvature κ [1/mm]";
+  kappa.x_range = AxisRange{0, 180};
+  kappa.x_tick_step = 15;
+  if (s.preset) {
+    kappa.add(curvature_series(s.preset->shape.name, s.preset->curvature, Series::Style::dashed,
+                               kPresetColor));
+    for (std::size_t i = 0; i < s.preset->shape.jumps.size(); ++i)
+      kappa.add_vertical_line(s.preset->shape.jumps[i].theta * kDeg,
+                              i == 0 ? "preset curvature jumps" : "", kFlagColor);
+  }
+  kappa.add(curvature_series("synthesised κ(θ)", s.curvature, Series::Style::line, kDesignColor));
+  Series targets{"targets κ_k", {}, {}, Series::Style::markers, "#009e73"};
+  Series residuals{"", {}, {}, Series::Style::markers, "#009e73"};
+  for (const TargetResidual& t : s.synthesis.targets) {
+    targets.x.push_back(t.theta * kDeg), targets.y.push_back(t.target);
+    residuals.x.push_back(t.theta * kDeg), residuals.y.push_back(t.residual());
+  }
+  kappa.add(std::move(targets));
+  Plot& residual = f.add_panel();
+  residual.y_label = "κ(θ_k) − κ_k [1/mm]";
+  residual.add_horizontal_line(0.0);
+  residual.add(std::move(residuals));
+  return f;
+}
+
+Figure stress_figure(const VesselJobResult& r) {
+  const VesselSolution& s = r.solution;
+  Figure f(900, 560);
+  f.title = "Membrane stresses at " + format_trimmed(r.design.pressure, 3) + " MPa, wall " +
+            format_trimmed(r.design.thickness, 3) + " mm";
+  Plot& plot = f.add_panel();
+  plot.x_label = "meridian arc length s from junction A [mm] (cylinder < 0, apex at the right)";
+  plot.y_label = "membrane stress [MPa]";
+  if (s.preset) {
+    const StressProfile& preset = s.preset->stresses;
+    plot.add(stress_series("σφ preset", preset, false, Series::Style::dashed, "#56b4e9"));
+    plot.add(stress_series("σθ preset", preset, true, Series::Style::dashed, "#e69f00"));
+    mark_compressive_bands(plot, preset, "preset", kPresetColor);
+  }
+  plot.add(stress_series("σφ meridional", s.stresses, false, Series::Style::line, kDesignColor));
+  plot.add(stress_series("σθ hoop", s.stresses, true, Series::Style::line, kFlagColor));
+  mark_compressive_bands(plot, s.stresses, "design", kFlagColor);
+  plot.add_horizontal_line(0.0);
+  plot.add_vertical_line(0.0, "junction A");
+  return f;
+}
+
+Figure profile_figure(const VesselJobResult& r) {
+  const NurbsCurve2d& c = r.conversion.curve;
+  Figure f(800, 620);
+  f.title = "Head profile: degree " + std::to_string(c.degree()) + ", " +
+            std::to_string(c.size()) + " control points, " +
+            std::to_string(r.conversion.arcs.size()) + " arcs";
+  Plot& plot = f.add_panel();
+  plot.equal_aspect = true;
+  plot.x_label = "x, radial [mm]";
+  plot.y_label = "z, axial [mm]";
+  if (r.solution.preset)
+    plot.add(meridian_series("preset", r.solution.preset->shape.profile, 720, Series::Style::dashed,
+                             kPresetColor));
+  // The polygon under the curve; its points marked only while they stay apart.
+  const auto polygon_style = c.size() <= 60 ? Series::Style::line_markers : Series::Style::line;
+  Series polygon{"control polygon", {}, {}, polygon_style, "#cc79a7"};
+  for (const Eigen::Vector2d& p : c.control_points())
+    polygon.x.push_back(p.x()), polygon.y.push_back(p.y());
+  plot.add(std::move(polygon));
+  Series curve{"profile (NURBS)", {}, {}, Series::Style::line, kDesignColor};
+  for (int k = 0; k <= 2000; ++k) {
+    const Eigen::Vector2d p = c(c.front() + (c.back() - c.front()) * k / 2000);
+    curve.x.push_back(p.x()), curve.y.push_back(p.y());
+  }
+  plot.add(std::move(curve));
+  // A stub of the cylinder below each junction, a quarter of the radius long.
+  const double x = r.surfaces.junction_radius, stub = std::min(r.design.length, x / 4);
+  plot.add({"cylinder", {x, x}, {0.0, -stub}, Series::Style::line, "#444444"});
+  plot.add({"", {-x, -x}, {0.0, -stub}, Series::Style::line, "#444444"});
+  plot.add_horizontal_line(0.0, "junction plane");
+  return f;
+}
+
+}  // namespace polarform

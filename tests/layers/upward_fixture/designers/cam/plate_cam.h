@@ -1,0 +1,2 @@
+// The designer header that upward.h includes (any content: only the include is checked).
+#pragma once

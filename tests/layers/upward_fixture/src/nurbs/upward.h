@@ -1,0 +1,4 @@
+// A kernel header that includes a designer: the include-direction check must reject it.
+#pragma once
+
+#include "designers/cam/plate_cam.h"
