@@ -1,8 +1,8 @@
 #include "export/csv_writer.h"
 
 #include "export/atomic_file.h"
-#include "export/number_format.h"
 #include "src/error.h"
+#include "src/number_text.h"
 
 namespace polarform {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <utility>
 
-#include "export/number_format.h"
+#include "src/number_text.h"
 
 namespace polarform {
 

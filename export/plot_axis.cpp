@@ -6,10 +6,10 @@
 #include <span>
 #include <string>
 
-#include "export/number_format.h"
 #include "export/plot_style.h"
 #include "export/text_width.h"
 #include "src/error.h"
+#include "src/number_text.h"
 
 namespace polarform {
 

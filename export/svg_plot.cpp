@@ -5,12 +5,12 @@
 #include <cmath>
 
 #include "export/atomic_file.h"
-#include "export/number_format.h"
 #include "export/plot_layout.h"
 #include "export/plot_panel.h"
 #include "export/plot_style.h"
 #include "export/svg_writer.h"
 #include "src/error.h"
+#include "src/number_text.h"
 
 namespace polarform {
 

@@ -1,7 +1,7 @@
 #include "export/svg_writer.h"
 
-#include "export/number_format.h"
 #include "export/xml_escape.h"
+#include "src/number_text.h"
 
 namespace polarform {
 

@@ -5,8 +5,8 @@
 #include <string>
 
 #include "designers/cam/displacement_polar_function.h"
-#include "src/message_text.h"
 #include "src/error.h"
+#include "src/number_text.h"
 
 namespace polarform {
 

@@ -5,8 +5,8 @@
 #include <numbers>
 #include <sstream>
 
-#include "src/message_text.h"
 #include "src/error.h"
+#include "src/number_text.h"
 
 namespace polarform {
 namespace {

@@ -7,10 +7,10 @@
 #include <numbers>
 #include <vector>
 
-#include "src/message_text.h"
 #include "designers/cam/displacement_polar_function.h"
 #include "designers/cam/extremum_search.h"
 #include "src/error.h"
+#include "src/number_text.h"
 
 namespace polarform {
 namespace {

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "src/error.h"
-#include "src/message_text.h"
+#include "src/number_text.h"
 #include "src/nurbs/basis.h"
 
 namespace polarform {

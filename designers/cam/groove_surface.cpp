@@ -10,7 +10,7 @@
 #include "designers/cam/groove_wall.h"
 #include "designers/convert/golden_section.h"
 #include "src/error.h"
-#include "src/message_text.h"
+#include "src/number_text.h"
 #include "src/nurbs/common_basis.h"
 #include "src/nurbs/knots.h"
 #include "src/nurbs/symbolic_product.h"

@@ -5,7 +5,7 @@
 #include <numbers>
 
 #include "src/error.h"
-#include "src/message_text.h"
+#include "src/number_text.h"
 
 namespace polarform {
 

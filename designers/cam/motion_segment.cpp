@@ -5,9 +5,9 @@
 #include <cmath>
 #include <vector>
 
-#include "src/message_text.h"
 #include "designers/cam/hermite_polynomial.h"
 #include "src/error.h"
+#include "src/number_text.h"
 #include "src/nurbs/basis.h"
 
 namespace polarform {

@@ -4,8 +4,8 @@
 #include <limits>
 #include <string>
 
-#include "src/message_text.h"
 #include "src/error.h"
+#include "src/number_text.h"
 
 namespace polarform {
 namespace {

@@ -8,7 +8,7 @@
 
 #include "designers/convert/conversion_error.h"
 #include "src/error.h"
-#include "src/message_text.h"
+#include "src/number_text.h"
 #include "src/nurbs/basis.h"
 #include "src/nurbs/periodic.h"
 

@@ -6,8 +6,8 @@
 
 #include "designers/convert/golden_section.h"
 #include "src/error.h"
-#include "src/message_text.h"
 #include "src/fit/constrained_least_squares.h"
+#include "src/number_text.h"
 #include "src/nurbs/basis.h"
 #include "src/nurbs/knot_removal.h"
 

@@ -7,7 +7,7 @@
 #include "designers/convert/conversion_error.h"
 #include "designers/convert/function_spline.h"
 #include "src/error.h"
-#include "src/message_text.h"
+#include "src/number_text.h"
 #include "src/nurbs/symbolic_product.h"
 
 namespace polarform {

@@ -9,6 +9,7 @@
 #include "designers/convert/polar_conversion.h"
 #include "src/base/angle_deviation.h"
 #include "src/error.h"
+#include "src/units.h"
 
 namespace polarform {
 
@@ -64,10 +65,10 @@ std::vector<StudyRow> tolerance_study(const PolarFunction& R, const std::vector<
 
 std::vector<DeviationRow> angle_deviation_study(int count) {
   if (count < 2) throw InputError("angle deviation study: at least 2 arc angles");
-  constexpr double kDeg = std::numbers::pi / 180;
   std::vector<DeviationRow> out;
   for (int k = 0; k < count; ++k) {
-    const double angle = 2 * kDeg * std::pow(90.0, static_cast<double>(k) / (count - 1));
+    const double angle =
+        2 * kRadiansPerDegree * std::pow(90.0, static_cast<double>(k) / (count - 1));
     DeviationRow row;
     row.arc_angle = angle;
     row.rqb = max_angle_deviation(ArcKind::rqb, angle / 2);

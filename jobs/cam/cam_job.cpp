@@ -5,8 +5,8 @@
 #include <numbers>
 
 #include "designers/cam/contour_polar_function.h"
-#include "export/number_format.h"
 #include "src/error.h"
+#include "src/number_text.h"
 #include "src/nurbs/symbolic_product.h"
 
 namespace polarform {

@@ -10,30 +10,25 @@
 #include "export/dxf_writer.h"
 #include "export/html_report.h"
 #include "export/iges_writer.h"
-#include "export/number_format.h"
 #include "export/step_solid.h"
 #include "export/step_writer.h"
 #include "export/x3d_writer.h"
-#include "polarform_version.h"
-#include "src/error.h"
 #include "jobs/cam/cam_plots.h"
 #include "jobs/report/conversion_report.h"
+#include "polarform_version.h"
+#include "src/error.h"
+#include "src/number_text.h"
+#include "src/units.h"
 
 namespace polarform {
 
 namespace {
 
-constexpr double kDeg = 180 / std::numbers::pi;
 using json = nlohmann::ordered_json;
 
-// Degrees in [0, 360) for a contour polar angle (the domain may start below zero).
-double angle_deg(double radians) {
-  const double d = std::fmod(radians * kDeg, 360.0);
-  return d < 0 ? d + 360.0 : d;
-}
-
 json extremum(const Extremum& e, double scale, const char* unit) {
-  return json{{std::string("value_") + unit, e.value * scale}, {"at_deg", e.theta * kDeg}};
+  return json{{std::string("value_") + unit, e.value * scale},
+              {"at_deg", e.theta * kDegreesPerRadian}};
 }
 
 // The curve the CAD files carry: the exact profile, or its degree-capped approximation.
@@ -55,15 +50,21 @@ std::string svaj_csv(const CamJobResult& r) {
     double d[4];
     r.program.derivatives(r.angles[i], 3, d);
     const Kinematics& k = r.kinematics[i];
-    std::vector<double> row = {r.angles[i] * kDeg, k.displacement, k.velocity, k.acceleration,
-                               k.jerk, d[1], d[2], d[3]};
+    std::vector<double> row = {r.angles[i] * kDegreesPerRadian,
+                               k.displacement,
+                               k.velocity,
+                               k.acceleration,
+                               k.jerk,
+                               d[1],
+                               d[2],
+                               d[3]};
     if (r.analysis) {
       const CamSample& s = r.analysis->samples[i];
-      row.push_back(s.pressure_angle * kDeg);
+      row.push_back(s.pressure_angle * kDegreesPerRadian);
       row.push_back(1 / s.contour_curvature);
       row.push_back(1 / s.pitch_curvature);
     }
-    if (r.barrel) row.push_back(r.barrel_pressure_angle[i] * kDeg);
+    if (r.barrel) row.push_back(r.barrel_pressure_angle[i] * kDegreesPerRadian);
     csv.row(row);
   }
   return csv.str();
@@ -81,7 +82,8 @@ std::string html_report(const CamJobResult& r, const CamOutputOptions& o, const 
       {"degree", std::to_string(plate ? r.profile.degree() : r.track.degree())},
       {"control points", std::to_string(plate ? r.profile.size() : r.track.size())},
       {"base-circle arcs", std::to_string(c.arcs.size())},
-      {"max tangent jump at arc junctions", format_trimmed(c.max_tangent_jump * kDeg, 6) + "°"}};
+      {"max tangent jump at arc junctions",
+       format_trimmed(c.max_tangent_jump * kDegreesPerRadian, 6) + "°"}};
   if (report.contains("max_pressure_angle_deg"))
     key.emplace_back("max pressure angle",
                      format_trimmed(report["max_pressure_angle_deg"].get<double>(), 2) + "°");
@@ -100,7 +102,8 @@ std::string html_report(const CamJobResult& r, const CamOutputOptions& o, const 
   html.add_svg(svgs.at("error.svg"), "Radial error of the NURBS profile, measured against the exact profile.");
   std::vector<std::vector<std::string>> arcs;
   for (const ArcSummary& a : c.arcs)
-    arcs.push_back({format_trimmed(angle_deg(a.start), 4), format_trimmed(a.sweep * kDeg, 4),
+    arcs.push_back({format_trimmed(degrees_in_turn(a.start), 4),
+                    format_trimmed(a.sweep * kDegreesPerRadian, 4),
                     format_trimmed(a.max_radial_error * 1e3, 4)});
   html.add_table({"arc start [deg]", "sweep [deg]", "max radial error [µm]"}, arcs);
   html.add_paragraph("Error budget: law → B-spline " +
@@ -152,16 +155,19 @@ json cam_report_json(const CamJobResult& r, const std::vector<std::string>& file
   }
   j["segments"] = json::array();
   for (const MotionSegment& s : r.program.segments())
-    j["segments"].push_back({{"name", s.name()},
-                             {"kind", segment_kind_name(s.spec().kind)},
-                             {"law", s.spec().kind == SegmentKind::Dwell ? "" : motion_law_name(s.spec().law)},
-                             {"start_deg", s.start() * kDeg},
-                             {"end_deg", s.end() * kDeg},
-                             {"lift_mm", s.spec().lift}});
+    j["segments"].push_back(
+        {{"name", s.name()},
+         {"kind", segment_kind_name(s.spec().kind)},
+         {"law", s.spec().kind == SegmentKind::Dwell ? "" : motion_law_name(s.spec().law)},
+         {"start_deg", s.start() * kDegreesPerRadian},
+         {"end_deg", s.end() * kDegreesPerRadian},
+         {"lift_mm", s.spec().lift}});
   j["continuity"] = json::array();
   for (const ContinuityIssue& i : r.continuity)
-    j["continuity"].push_back({{"angle_deg", i.angle * kDeg}, {"derivative", i.derivative},
-                               {"jump_per_rad", i.jump()}, {"message", i.message()}});
+    j["continuity"].push_back({{"angle_deg", i.angle * kDegreesPerRadian},
+                               {"derivative", i.derivative},
+                               {"jump_per_rad", i.jump()},
+                               {"message", i.message()}});
   // Conversion (the fields the issue fixes first).
   const bool plate = r.plate.has_value();
   add_conversion_fields(j, c, plate ? r.profile.degree() : r.track.degree(),
@@ -191,17 +197,18 @@ json cam_report_json(const CamJobResult& r, const std::vector<std::string>& file
   // Analyses.
   if (r.analysis) {
     const CamAnalysis& a = *r.analysis;
-    j["max_pressure_angle_deg"] = a.max_pressure_angle.value * kDeg;
-    j["max_pressure_angle_at_deg"] = a.max_pressure_angle.theta * kDeg;
+    j["max_pressure_angle_deg"] = a.max_pressure_angle.value * kDegreesPerRadian;
+    j["max_pressure_angle_at_deg"] = a.max_pressure_angle.theta * kDegreesPerRadian;
     j["min_radius_of_curvature_mm"] = a.min_convex_contour_radius.value;
-    j["min_radius_of_curvature_at_deg"] = a.min_convex_contour_radius.theta * kDeg;
+    j["min_radius_of_curvature_at_deg"] = a.min_convex_contour_radius.theta * kDegreesPerRadian;
     j["min_concave_radius_of_curvature_mm"] =
         std::isfinite(a.min_concave_contour_radius.value) ? json(a.min_concave_contour_radius.value) : json(nullptr);
     j["min_pitch_radius_of_curvature_mm"] =
         std::isfinite(a.min_convex_pitch_radius.value) ? json(a.min_convex_pitch_radius.value) : json(nullptr);
     j["undercut"] = !a.undercut.empty();
     j["undercut_ranges_deg"] = json::array();
-    for (const AngleRange& u : a.undercut) j["undercut_ranges_deg"].push_back({u.from * kDeg, u.to * kDeg});
+    for (const AngleRange& u : a.undercut)
+      j["undercut_ranges_deg"].push_back({u.from * kDegreesPerRadian, u.to * kDegreesPerRadian});
     if (a.face_width) j["face_width_mm"] = {{"left", a.face_width->left}, {"right", a.face_width->right}};
     j["motion"] = {{"max_velocity", extremum(a.motion.velocity, 1, "mm_per_rad")},
                    {"max_acceleration", extremum(a.motion.acceleration, 1, "mm_per_rad2")},
@@ -209,7 +216,7 @@ json cam_report_json(const CamJobResult& r, const std::vector<std::string>& file
   } else {
     double worst = 0;
     for (double p : r.barrel_pressure_angle) worst = std::max(worst, std::abs(p));
-    j["max_pressure_angle_deg"] = worst * kDeg;
+    j["max_pressure_angle_deg"] = worst * kDegreesPerRadian;
     j["undercut"] = false;
   }
   const double omega = 2 * std::numbers::pi * d.rpm / 60;

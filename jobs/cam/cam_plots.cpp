@@ -4,17 +4,18 @@
 #include <numbers>
 
 #include "designers/convert/conversion_error.h"
+#include "src/number_text.h"
+#include "src/units.h"
 
 namespace polarform {
 
 namespace {
 
-constexpr double kDeg = 180 / std::numbers::pi;
 const char* kJumpColor = "#d55e00";
 
 std::vector<double> in_degrees(const std::vector<double>& radians) {
   std::vector<double> out;
-  for (double x : radians) out.push_back(x * kDeg);
+  for (double x : radians) out.push_back(x * kDegreesPerRadian);
   out.push_back(360.0);  // close the revolution
   return out;
 }
@@ -22,11 +23,12 @@ std::vector<double> in_degrees(const std::vector<double>& radians) {
 // Segment boundaries as grey lines, continuity violations as labelled orange lines.
 void mark_segments(const CamJobResult& r, Plot& plot, bool labels) {
   for (std::size_t k = 1; k < r.program.segments().size(); ++k)
-    plot.add_vertical_line(r.program.segments()[k].start() * kDeg);
+    plot.add_vertical_line(r.program.segments()[k].start() * kDegreesPerRadian);
   for (const ContinuityIssue& issue : r.continuity) {
     static const char* names[] = {"s", "v", "a", "j"};
-    plot.add_vertical_line(issue.angle * kDeg,
-                           labels ? std::string(names[issue.derivative]) + " jump" : "", kJumpColor);
+    plot.add_vertical_line(issue.angle * kDegreesPerRadian,
+                           labels ? std::string(names[issue.derivative]) + " jump" : "",
+                           kJumpColor);
   }
 }
 
@@ -57,7 +59,8 @@ void add_points(Plot& plot, std::string label, const std::vector<Eigen::Vector2d
 void add_circle(Plot& plot, std::string label, double radius, Series::Style style) {
   std::vector<Eigen::Vector2d> points;
   for (int k = 0; k <= 360; ++k)
-    points.emplace_back(radius * std::cos(k / kDeg), radius * std::sin(k / kDeg));
+    points.emplace_back(radius * std::cos(k / kDegreesPerRadian),
+                        radius * std::sin(k / kDegreesPerRadian));
   add_points(plot, std::move(label), points, style, "#999999");
 }
 
@@ -106,7 +109,7 @@ Figure analysis_figure(const CamJobResult& r) {
     f.title = "Pressure angle and radius of curvature";
     std::vector<double> phi, contour, pitch;
     for (const CamSample& s : r.analysis->samples) {
-      phi.push_back(s.pressure_angle * kDeg);
+      phi.push_back(s.pressure_angle * kDegreesPerRadian);
       contour.push_back(s.contour_curvature != 0 ? 1 / s.contour_curvature : NAN);
       pitch.push_back(s.pitch_curvature != 0 ? 1 / s.pitch_curvature : NAN);
     }
@@ -121,11 +124,11 @@ Figure analysis_figure(const CamJobResult& r) {
     const double limit = 4 * (r.project.cam.base_radius + r.program.stroke());
     radius.y_range = AxisRange{-limit, limit};
     for (const AngleRange& u : r.analysis->undercut)
-      radius.add_band(u.from * kDeg, u.to * kDeg, "undercut", kJumpColor);
+      radius.add_band(u.from * kDegreesPerRadian, u.to * kDegreesPerRadian, "undercut", kJumpColor);
   } else {
     f.title = "Pressure angle at the pitch radius";
     std::vector<double> phi;
-    for (double a : r.barrel_pressure_angle) phi.push_back(a * kDeg);
+    for (double a : r.barrel_pressure_angle) phi.push_back(a * kDegreesPerRadian);
     phi.push_back(phi.front());
     pressure.add(series("", x, phi));
     std::vector<double> z;
@@ -191,7 +194,7 @@ std::vector<std::pair<double, double>> radial_error_samples(const CamJobResult& 
     const double u = c.front() + (c.back() - c.front()) * k / count;
     double psi;
     const double e = radial_error_at(c, r.profile_function, u, u, &psi);
-    out.emplace_back(psi * kDeg, e);
+    out.emplace_back(psi * kDegreesPerRadian, e);
   }
   return out;
 }
@@ -199,7 +202,7 @@ std::vector<std::pair<double, double>> radial_error_samples(const CamJobResult& 
 Figure conversion_error_figure(const CamJobResult& r) {
   Figure f(900, 420);
   f.title = "Measured radial error of the NURBS profile (tolerance " +
-            std::to_string(r.conversion.tolerance * 1e3).substr(0, 6) + " µm)";
+            number_text(to_micrometres(r.conversion.tolerance)) + " µm)";
   Plot& plot = f.add_panel();
   plot.x_label = "polar angle ψ [deg]";
   plot.y_label = "radial error [µm]";
@@ -208,9 +211,9 @@ Figure conversion_error_figure(const CamJobResult& r) {
   plot.add(series("|ρ − R(ψ)|", std::move(x), std::move(y)));
   plot.add_horizontal_line(r.conversion.tolerance * 1e3, "tolerance", kJumpColor);
   for (std::size_t j = 1; j < r.conversion.arcs.size(); ++j)
-    plot.add_vertical_line(r.conversion.arcs[j].start * kDeg);
-  plot.add_annotation(r.conversion.arcs.front().start * kDeg, r.conversion.tolerance * 1e3,
-                      "grey lines: arc junctions");
+    plot.add_vertical_line(r.conversion.arcs[j].start * kDegreesPerRadian);
+  plot.add_annotation(r.conversion.arcs.front().start * kDegreesPerRadian,
+                      r.conversion.tolerance * 1e3, "grey lines: arc junctions");
   return f;
 }
 

@@ -5,23 +5,23 @@
 #include <numbers>
 
 #include "export/atomic_file.h"
+#include "export/colormap.h"
 #include "export/dxf_writer.h"
 #include "export/html_report.h"
 #include "export/iges_writer.h"
-#include "export/number_format.h"
 #include "export/ply_writer.h"
 #include "export/step_writer.h"
 #include "export/x3d_writer.h"
+#include "jobs/fit/fit_plots.h"
 #include "polarform_version.h"
 #include "src/error.h"
-#include "jobs/fit/fit_plots.h"
-#include "export/colormap.h"
+#include "src/number_text.h"
+#include "src/units.h"
 
 namespace polarform {
 
 namespace {
 
-constexpr double kDeg = 180.0 / std::numbers::pi;
 using json = nlohmann::ordered_json;
 
 json vec(const Eigen::Vector3d& v) { return json::array({v.x(), v.y(), v.z()}); }
@@ -78,13 +78,13 @@ json pole_json(PoleTreatment t, const std::optional<PoleReport>& p,
   if (p)
     j["measured"] = {{"point", vec(p->point)},
                      {"gap_mm", p->gap},
-                     {"normal_spread_deg", p->normal_spread * kDeg}};
+                     {"normal_spread_deg", p->normal_spread * kDegreesPerRadian}};
   if (cap)
     j["cap"] = {{"point", vec(cap->point)},
                 {"normal", vec(cap->normal)},
                 {"degree", json::array({cap->surface.degree_u(), cap->surface.degree_v()})},
                 {"boundary_gap_mm", cap->boundary_gap},
-                {"boundary_normal_angle_deg", cap->boundary_normal_angle * kDeg}};
+                {"boundary_normal_angle_deg", cap->boundary_normal_angle * kDegreesPerRadian}};
   return j;
 }
 
@@ -176,14 +176,16 @@ json fit_report_json(const FitJobResult& r, const std::vector<std::string>& file
       const SphericalFit& s = *f.spherical;
       j["closed"] = s.closed;
       if (s.closed)
-        j["seam"] = {{"gap_mm", s.seam.gap}, {"normal_angle_deg", s.seam.normal_angle * kDeg}};
+        j["seam"] = {{"gap_mm", s.seam.gap},
+                     {"normal_angle_deg", s.seam.normal_angle * kDegreesPerRadian}};
       j["poles"] = {{"north", pole_json(s.north, s.north_pole, s.north_cap)},
                     {"south", pole_json(s.south, s.south_pole, s.south_cap)}};
     } else {
       const CylindricalFit& c = *f.cylindrical;
       j["closed"] = c.closed;
       if (c.closed)
-        j["seam"] = {{"gap_mm", c.seam.gap}, {"normal_angle_deg", c.seam.normal_angle * kDeg}};
+        j["seam"] = {{"gap_mm", c.seam.gap},
+                     {"normal_angle_deg", c.seam.normal_angle * kDegreesPerRadian}};
       j["height_range_mm"] = json::array({c.base.z_start(), c.base.z_end()});
     }
     j["degrees"] = {{"F", json::array({rep.degree_u, rep.degree_v})},

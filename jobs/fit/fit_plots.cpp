@@ -5,17 +5,13 @@
 #include <numbers>
 #include <sstream>
 
+#include "src/units.h"
+
 namespace polarform {
 
 namespace {
 
-constexpr double kDeg = 180.0 / std::numbers::pi;
 constexpr int kMarkers = 4000;
-
-double degrees_0_360(double radians) {
-  const double d = std::fmod(radians * kDeg, 360.0);
-  return d < 0 ? d + 360.0 : d;
-}
 
 std::string mm(double x) {
   std::ostringstream o;
@@ -97,7 +93,7 @@ Figure polar_preview(const FitJobResult& r) {
   std::vector<double> angle(static_cast<std::size_t>(local.cols()));
   for (Eigen::Index k = 0; k < local.cols(); ++k)
     angle[static_cast<std::size_t>(k)] =
-        degrees_0_360(std::atan2(local(1, k) - f.centre.y(), local(0, k) - f.centre.x()));
+        degrees_in_turn(std::atan2(local(1, k) - f.centre.y(), local(0, k) - f.centre.x()));
   deviation_panel(dev, angle, rep.signed_distance, stride, rep.error.rms);
   dev.x_range = AxisRange{0, 360};
   dev.x_tick_step = 45;
@@ -118,9 +114,10 @@ Figure surface_preview(const FitJobResult& r) {
   std::vector<double> theta(static_cast<std::size_t>(local.cols())), second(theta.size());
   for (Eigen::Index k = 0; k < local.cols(); ++k) {
     const auto i = static_cast<std::size_t>(k);
-    theta[i] = degrees_0_360(std::atan2(local(1, k), local(0, k)));
+    theta[i] = degrees_in_turn(std::atan2(local(1, k), local(0, k)));
     second[i] = f.method == FitMethod::spherical
-                    ? std::acos(std::clamp(local(2, k) / local.col(k).norm(), -1.0, 1.0)) * kDeg
+                    ? std::acos(std::clamp(local(2, k) / local.col(k).norm(), -1.0, 1.0)) *
+                          kDegreesPerRadian
                     : local(2, k);
   }
   Plot& by_theta = fig.add_panel();

@@ -10,14 +10,14 @@
 #include "export/xml_escape.h"
 #include "jobs/project/xml_reader.h"
 #include "src/error.h"
-#include "src/message_text.h"
+#include "src/number_text.h"
+#include "src/units.h"
 
 namespace polarform {
 
 namespace {
 
 using tinyxml2::XMLElement;
-constexpr double kDegree = std::numbers::pi / 180;
 
 std::string number(double x) {
   char buf[32];
@@ -29,17 +29,17 @@ std::string number(double x) {
 // 239.99999999999997 that radians → degrees gives back.
 std::string degrees_text(double radians) {
   char buf[32];
-  const auto result =
-      std::to_chars(buf, buf + sizeof buf, radians / kDegree, std::chars_format::general, 12);
+  const auto result = std::to_chars(buf, buf + sizeof buf, radians * kDegreesPerRadian,
+                                    std::chars_format::general, 12);
   return std::string(buf, result.ptr) + "°";
 }
 
 // The degree value whose conversion d·π/180 gives back exactly `radians` (searched among the
 // neighbours of the rounded quotient), so that save → load is exact.
 double degrees_for(double radians) {
-  double d = radians / kDegree;
-  for (int k = 0; k < 8 && d * kDegree != radians; ++k)
-    d = std::nextafter(d, d * kDegree < radians ? HUGE_VAL : -HUGE_VAL);
+  double d = radians * kDegreesPerRadian;
+  for (int k = 0; k < 8 && d * kRadiansPerDegree != radians; ++k)
+    d = std::nextafter(d, d * kRadiansPerDegree < radians ? HUGE_VAL : -HUGE_VAL);
   return d;
 }
 
@@ -73,8 +73,8 @@ SegmentSpec read_segment(const XmlElementReader& r, double from, double level,
   SegmentSpec s;
   s.kind = parse_segment_kind(r.choice("kind", {"dwell", "rise", "return"}));
   s.name = r.text("name", "");
-  s.start = r.number("from", from / kDegree) * kDegree;
-  s.end = r.number("to") * kDegree;
+  s.start = r.number("from", from * kDegreesPerRadian) * kRadiansPerDegree;
+  s.end = r.number("to") * kRadiansPerDegree;
   if (!(s.end > s.start))
     r.fail("to", "an angle after the segment start " + degrees_text(s.start));
   if (s.kind == SegmentKind::Dwell) return s;

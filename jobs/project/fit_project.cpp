@@ -3,10 +3,10 @@
 #include <sstream>
 
 #include "export/atomic_file.h"
-#include "export/number_format.h"
 #include "export/xml_escape.h"
 #include "jobs/project/xml_reader.h"
 #include "src/error.h"
+#include "src/number_text.h"
 
 namespace polarform {
 

@@ -9,6 +9,7 @@
 #include "jobs/project/xml_reader.h"
 #include "src/error.h"
 #include "src/nurbs/knots.h"
+#include "src/units.h"
 
 namespace polarform {
 
@@ -167,8 +168,8 @@ VesselDesign to_design(const VesselProject& project) {
   VesselDesign d = project.design;
   d.targets.clear();
   for (const CurvatureEntry& c : project.curvatures)
-    d.targets.push_back({c.theta_deg * std::numbers::pi / 180,
-                         c.is_radius ? 1.0 / c.value : c.value, c.weight});
+    d.targets.push_back(
+        {c.theta_deg * kRadiansPerDegree, c.is_radius ? 1.0 / c.value : c.value, c.weight});
   return d;
 }
 

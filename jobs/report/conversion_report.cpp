@@ -3,18 +3,9 @@
 #include <cmath>
 #include <numbers>
 
+#include "src/units.h"
+
 namespace polarform {
-
-namespace {
-
-constexpr double kDeg = 180.0 / std::numbers::pi;
-
-double angle_deg(double radians) {
-  const double d = std::fmod(radians * kDeg, 360.0);
-  return d < 0 ? d + 360.0 : d;
-}
-
-}  // namespace
 
 void add_conversion_fields(nlohmann::ordered_json& j, const PolarConversion& c, int degree,
                            int control_points, std::size_t knot_count) {
@@ -25,8 +16,8 @@ void add_conversion_fields(nlohmann::ordered_json& j, const PolarConversion& c, 
   j["knot_count"] = knot_count;
   j["max_radial_error_mm"] = c.max_radial_error;
   j["max_normal_error_mm"] = c.max_normal_error;
-  j["worst_angle_deg"] = angle_deg(c.worst_angle);
-  j["max_tangent_jump_deg"] = c.max_tangent_jump * kDeg;
+  j["worst_angle_deg"] = degrees_in_turn(c.worst_angle);
+  j["max_tangent_jump_deg"] = c.max_tangent_jump * kDegreesPerRadian;
   j["base"] = c.base.kind() == ArcKind::quartic ? "quasi-uniform" : "rqb";
   j["alpha"] = c.base.alpha_rule() == AlphaRule::minimax ? "minimax" : "printed";
   j["error_budget"] = {{"function_mm", c.function_error},
@@ -34,7 +25,8 @@ void add_conversion_fields(nlohmann::ordered_json& j, const PolarConversion& c, 
                        {"synchronization_mm", c.synchronization_error}};
   j["arc_list"] = nlohmann::ordered_json::array();
   for (const ArcSummary& a : c.arcs)
-    j["arc_list"].push_back({{"start_deg", angle_deg(a.start)}, {"sweep_deg", a.sweep * kDeg},
+    j["arc_list"].push_back({{"start_deg", degrees_in_turn(a.start)},
+                             {"sweep_deg", a.sweep * kDegreesPerRadian},
                              {"max_radial_error_mm", a.max_radial_error}});
 }
 

@@ -10,18 +10,18 @@
 #include "export/dxf_writer.h"
 #include "export/html_report.h"
 #include "export/iges_writer.h"
-#include "export/number_format.h"
 #include "export/step_writer.h"
 #include "export/x3d_writer.h"
+#include "jobs/scan_cam/scan_cam_plots.h"
 #include "polarform_version.h"
 #include "src/error.h"
-#include "jobs/scan_cam/scan_cam_plots.h"
+#include "src/number_text.h"
+#include "src/units.h"
 
 namespace polarform {
 
 namespace {
 
-constexpr double kDeg = 180.0 / std::numbers::pi;
 constexpr int kGrid = 720;  // cam angles of svaj.csv (0.5° apart)
 using json = nlohmann::ordered_json;
 
@@ -48,7 +48,7 @@ std::string svaj_csv(const ScanCamJobResult& r) {
   for (double theta : cam_angles()) {
     double d[4];
     r.scan.displacement_derivatives(theta, 3, d);
-    std::vector<double> row = {theta * kDeg, d[0], d[1], d[2], d[3]};
+    std::vector<double> row = {theta * kDegreesPerRadian, d[0], d[1], d[2], d[3]};
     if (r.nominal) {
       double n[4];
       r.nominal->program().derivatives(theta, 3, n);
@@ -62,7 +62,7 @@ std::string svaj_csv(const ScanCamJobResult& r) {
 std::string deviation_csv(const NominalComparison& c) {
   CsvWriter csv({"theta [deg]", "radial deviation [mm]", "normal deviation [mm]"});
   for (std::size_t i = 0; i < c.theta.size(); ++i)
-    csv.row({c.theta[i] * kDeg, c.radial[i], c.normal[i]});
+    csv.row({c.theta[i] * kDegreesPerRadian, c.radial[i], c.normal[i]});
   return csv.str();
 }
 
@@ -97,8 +97,8 @@ std::string html_report(const ScanCamJobResult& r, const json& report,
       {"base radius", format_trimmed(s.base_radius, 4) + " mm"},
       {"lift", format_trimmed(report["motion"]["lift_mm"].get<double>(), 4) + " mm"}};
   if (s.alignment)
-    key.emplace_back("phase to nominal", format_trimmed(s.alignment->phase * kDeg, 4) + "°" +
-                                             (s.mirrored ? " (mirrored)" : ""));
+    key.emplace_back("phase to nominal", format_trimmed(s.alignment->phase * kDegreesPerRadian, 4) +
+                                             "°" + (s.mirrored ? " (mirrored)" : ""));
   if (r.comparison) {
     key.emplace_back("max |normal deviation|",
                      format_trimmed(r.comparison->normal_stats.max * 1e3, 3) + " µm");
@@ -197,7 +197,7 @@ json scan_cam_report_json(const ScanCamJobResult& r, const std::vector<std::stri
                        {"base_radius_mm", s.base_radius}};
   j["motion"] = motion_json(s);
   if (s.alignment)
-    j["alignment"] = {{"phase_deg", s.alignment->phase * kDeg},
+    j["alignment"] = {{"phase_deg", s.alignment->phase * kDegreesPerRadian},
                       {"mirrored", s.mirrored},
                       {"rms_radial_difference_mm", s.alignment->rms}};
   if (r.comparison) {

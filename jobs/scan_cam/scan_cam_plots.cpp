@@ -5,18 +5,18 @@
 
 #include "designers/cam/contour_polar_function.h"
 #include "jobs/fit/fit_plots.h"
+#include "src/units.h"
 
 namespace polarform {
 
 namespace {
 
-constexpr double kDeg = 180.0 / std::numbers::pi;
 const char* kNames[4] = {"s [mm]", "v = ds/dθ [mm/rad]", "a = d²s/dθ² [mm/rad²]",
                          "j = d³s/dθ³ [mm/rad³]"};
 
 std::vector<double> degrees(const std::vector<double>& radians) {
   std::vector<double> d;
-  for (double r : radians) d.push_back(r * kDeg);
+  for (double r : radians) d.push_back(r * kDegreesPerRadian);
   return d;
 }
 
@@ -61,7 +61,7 @@ Figure scan_svaj_figure(const ScanCamJobResult& r) {
       Series data{"scan samples", {}, {}, Series::Style::markers, "#aaaaaa"};
       const int stride = marker_stride(s.samples.theta.size(), 1500);
       for (Eigen::Index i = 0; i < s.samples.theta.size(); i += stride) {
-        data.x.push_back(s.samples.theta[i] * kDeg);
+        data.x.push_back(s.samples.theta[i] * kDegreesPerRadian);
         data.y.push_back(s.samples.height[i] - s.rest_height);
       }
       p.add(std::move(data));
@@ -106,7 +106,7 @@ Figure scan_deviation_figure(const ScanCamJobResult& r) {
     p.title = "Deviation from the nominal profile (+ = more material), after phase alignment";
     Series points{"scanned points (radial)", {}, {}, Series::Style::markers, "#bbbbbb"};
     for (Eigen::Index i = 0; i < s.samples.theta.size(); i += stride) {
-      points.x.push_back(s.samples.theta[i] * kDeg);
+      points.x.push_back(s.samples.theta[i] * kDegreesPerRadian);
       points.y.push_back(c.point_radial[i]);
     }
     p.add(std::move(points));
@@ -116,7 +116,7 @@ Figure scan_deviation_figure(const ScanCamJobResult& r) {
     p.title = "Scanned points about the fitted profile (closest-point distance, + outside)";
     Series points{"scanned points", {}, {}, Series::Style::markers, "#888888"};
     for (Eigen::Index i = 0; i < s.samples.theta.size(); i += stride) {
-      points.x.push_back(s.samples.theta[i] * kDeg);
+      points.x.push_back(s.samples.theta[i] * kDegreesPerRadian);
       points.y.push_back(s.fit.report.signed_distance[i]);
     }
     p.add(std::move(points));

@@ -2,23 +2,21 @@
 
 #include <chrono>
 #include <map>
-#include <numbers>
-
 #include <nlohmann/json.hpp>
+#include <numbers>
 
 #include "export/atomic_file.h"
 #include "export/csv_writer.h"
-#include "export/number_format.h"
 #include "export/svg_plot.h"
+#include "jobs/cam/cam_job.h"
 #include "polarform_version.h"
 #include "src/error.h"
-#include "jobs/cam/cam_job.h"
+#include "src/number_text.h"
+#include "src/units.h"
 
 namespace polarform {
 
 namespace {
-
-constexpr double kDeg = 180 / std::numbers::pi;
 
 Series line(std::string label, std::vector<double> x, std::vector<double> y, std::string color) {
   Series s;
@@ -67,7 +65,7 @@ Figure deviation_figure(const StudyJobResult& r) {
   plot.y_label = "max |ξ(η) − 2φη| [rad]";
   std::vector<double> x, rqb, minimax, printed;
   for (const DeviationRow& d : r.deviation) {
-    x.push_back(d.arc_angle * kDeg);
+    x.push_back(d.arc_angle * kDegreesPerRadian);
     rqb.push_back(d.rqb);
     minimax.push_back(d.quartic_minimax);
     printed.push_back(d.quartic_printed);
@@ -131,7 +129,7 @@ std::vector<std::string> write_study_outputs(const StudyJobResult& r, const std:
                        "quartic minimax max angle deviation [rad]",
                        "quartic printed max angle deviation [rad]"});
   for (const DeviationRow& d : r.deviation)
-    deviation.row({d.arc_angle * kDeg, d.rqb, d.quartic_minimax, d.quartic_printed});
+    deviation.row({d.arc_angle * kDegreesPerRadian, d.rqb, d.quartic_minimax, d.quartic_printed});
   content["study.csv"] = study.str();
   content["deviation.csv"] = deviation.str();
   content["study.svg"] = study_figure(r, design_name).svg();

@@ -2,8 +2,8 @@
 
 #include <chrono>
 
-#include "export/number_format.h"
 #include "src/error.h"
+#include "src/number_text.h"
 
 namespace polarform {
 

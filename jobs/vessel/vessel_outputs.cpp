@@ -11,18 +11,18 @@
 #include "export/dxf_writer.h"
 #include "export/html_report.h"
 #include "export/iges_writer.h"
-#include "export/number_format.h"
 #include "export/step_writer.h"
+#include "jobs/report/conversion_report.h"
+#include "jobs/vessel/vessel_plots.h"
 #include "polarform_version.h"
 #include "src/error.h"
-#include "jobs/vessel/vessel_plots.h"
-#include "jobs/report/conversion_report.h"
+#include "src/number_text.h"
+#include "src/units.h"
 
 namespace polarform {
 
 namespace {
 
-constexpr double kDeg = 180 / std::numbers::pi;
 using json = nlohmann::ordered_json;
 
 // "mm", "mm/rad" or "mm/rad^2" for a condition named "R(0)", "R'(π)", "R''(0)", …
@@ -52,17 +52,17 @@ json stresses_json(const StressProfile& p) {
     if (!min_theta || s.hoop_stress < min_theta->hoop_stress) min_theta = &s;
   }
   j["head"] = {{"max_meridional_stress_mpa", max_phi->meridional_stress},
-               {"max_meridional_at_deg", max_phi->theta * kDeg},
+               {"max_meridional_at_deg", max_phi->theta * kDegreesPerRadian},
                {"max_hoop_stress_mpa", max_theta->hoop_stress},
-               {"max_hoop_at_deg", max_theta->theta * kDeg},
+               {"max_hoop_at_deg", max_theta->theta * kDegreesPerRadian},
                {"min_hoop_stress_mpa", min_theta->hoop_stress},
-               {"min_hoop_at_deg", min_theta->theta * kDeg}};
+               {"min_hoop_at_deg", min_theta->theta * kDegreesPerRadian}};
   j["max_stress_mpa"] = max_stress;
   j["compressive_hoop"] = !p.compressive_hoop.empty();
   j["compressive_hoop_bands"] = json::array();
   for (const CompressiveBand& b : p.compressive_hoop)
-    j["compressive_hoop_bands"].push_back({{"theta_from_deg", b.theta_from * kDeg},
-                                           {"theta_to_deg", b.theta_to * kDeg},
+    j["compressive_hoop_bands"].push_back({{"theta_from_deg", b.theta_from * kDegreesPerRadian},
+                                           {"theta_to_deg", b.theta_to * kDegreesPerRadian},
                                            {"s_from_mm", b.s_from},
                                            {"s_to_mm", b.s_to},
                                            {"min_hoop_stress_mpa", b.min_hoop_stress}});
@@ -80,10 +80,10 @@ json preset_json(const VesselJobResult& r) {
   }
   j["depth_mm"] = c.shape.depth;
   j["max_deviation_mm"] = c.max_deviation;
-  j["deviation_at_deg"] = c.deviation_angle * kDeg;
+  j["deviation_at_deg"] = c.deviation_angle * kDegreesPerRadian;
   j["curvature_jumps"] = json::array();
   for (const CurvatureJump& k : c.shape.jumps)
-    j["curvature_jumps"].push_back({{"theta_deg", k.theta * kDeg},
+    j["curvature_jumps"].push_back({{"theta_deg", k.theta * kDegreesPerRadian},
                                     {"kappa_before_per_mm", k.kappa_before},
                                     {"kappa_after_per_mm", k.kappa_after}});
   j["stresses"] = stresses_json(c.stresses);
@@ -116,7 +116,7 @@ json synthesis_json(const VesselJobResult& r) {
           {"rms_residual_per_mm", std::sqrt(sum_squares / s.targets.size())},
           {"max_violation", s.max_violation},
           {"min_radius_mm", s.min_radius},
-          {"min_radius_at_deg", s.min_radius_angle * kDeg}};
+          {"min_radius_at_deg", s.min_radius_angle * kDegreesPerRadian}};
 }
 
 std::string profile_csv(const VesselJobResult& r) {
@@ -129,8 +129,9 @@ std::string profile_csv(const VesselJobResult& r) {
   for (const CurvatureSample& c : s.curvature) {
     double d[3];
     s.profile.derivatives(c.theta, 2, d);
-    std::vector<double> row = {c.theta * kDeg, d[0], d[1], d[2], d[0] * std::cos(c.theta),
-                               d[0] * std::sin(c.theta), c.kappa};
+    std::vector<double> row = {
+        c.theta * kDegreesPerRadian, d[0],   d[1], d[2], d[0] * std::cos(c.theta),
+        d[0] * std::sin(c.theta),    c.kappa};
     if (s.preset) {
       double e[3];
       s.preset->shape.profile.derivatives(c.theta, 2, e);
@@ -146,8 +147,9 @@ std::string stress_csv(const StressProfile& p) {
                  "N_phi [N/mm]", "N_theta [N/mm]", "sigma_phi [MPa]", "sigma_theta [MPa]",
                  "on cylinder [1/0]"});
   for (const StressSample& k : p.samples)
-    csv.row({k.s, k.theta * kDeg, k.rho, k.z, k.radii.kappa1, k.radii.r2, k.forces.meridional,
-             k.forces.hoop, k.meridional_stress, k.hoop_stress, k.on_cylinder ? 1.0 : 0.0});
+    csv.row({k.s, k.theta * kDegreesPerRadian, k.rho, k.z, k.radii.kappa1, k.radii.r2,
+             k.forces.meridional, k.forces.hoop, k.meridional_stress, k.hoop_stress,
+             k.on_cylinder ? 1.0 : 0.0});
   return csv.str();
 }
 
@@ -186,9 +188,9 @@ std::string html_report(const VesselJobResult& r, const VesselOutputOptions& o, 
                                              preset_note + "; below, the residual at each target.");
   std::vector<std::vector<std::string>> targets;
   for (const TargetResidual& t : s.synthesis.targets)
-    targets.push_back({format_trimmed(t.theta * kDeg, 4), format_trimmed(t.target * 1e3, 6),
-                       format_trimmed(t.achieved * 1e3, 6), format_trimmed(t.residual() * 1e3, 6),
-                       format_trimmed(t.weight, 4)});
+    targets.push_back({format_trimmed(t.theta * kDegreesPerRadian, 4),
+                       format_trimmed(t.target * 1e3, 6), format_trimmed(t.achieved * 1e3, 6),
+                       format_trimmed(t.residual() * 1e3, 6), format_trimmed(t.weight, 4)});
   html.add_table({"θ [deg]", "target κ [1/m]", "achieved κ [1/m]", "residual [1/m]", "weight"},
                  targets);
   std::vector<std::vector<std::string>> conditions;
@@ -200,8 +202,8 @@ std::string html_report(const VesselJobResult& r, const VesselOutputOptions& o, 
   if (s.preset)
     html.add_paragraph("Against the " + s.preset->shape.name + " head: max |ΔR| " +
                        format_trimmed(s.preset->max_deviation, 4) + " mm at θ = " +
-                       format_trimmed(s.preset->deviation_angle * kDeg, 3) + "°; preset depth " +
-                       format_trimmed(s.preset->shape.depth, 3) + " mm.");
+                       format_trimmed(s.preset->deviation_angle * kDegreesPerRadian, 3) +
+                       "°; preset depth " + format_trimmed(s.preset->shape.depth, 3) + " mm.");
   html.add_heading("Membrane stresses");
   html.add_svg(svgs.at("stress.svg"),
                "Meridional σφ and hoop σθ along the meridian; shaded: compressive hoop stress.");
@@ -209,7 +211,8 @@ std::string html_report(const VesselJobResult& r, const VesselOutputOptions& o, 
   html.add_svg(svgs.at("profile.svg"), "The exported profile with its control polygon.");
   std::vector<std::vector<std::string>> arcs;
   for (const ArcSummary& a : c.arcs)
-    arcs.push_back({format_trimmed(a.start * kDeg, 4), format_trimmed(a.sweep * kDeg, 4),
+    arcs.push_back({format_trimmed(a.start * kDegreesPerRadian, 4),
+                    format_trimmed(a.sweep * kDegreesPerRadian, 4),
                     format_trimmed(a.max_radial_error * 1e3, 4)});
   html.add_table({"arc start [deg]", "sweep [deg]", "max radial error [µm]"}, arcs);
   html.add_file_list(report["files"].get<std::vector<std::string>>());
@@ -230,8 +233,10 @@ json vessel_report_json(const VesselJobResult& r, const std::vector<std::string>
   j["synthesis"] = synthesis_json(r);
   j["targets"] = json::array();
   for (const TargetResidual& t : s.synthesis.targets)
-    j["targets"].push_back({{"theta_deg", t.theta * kDeg}, {"target_per_mm", t.target},
-                            {"achieved_per_mm", t.achieved}, {"residual_per_mm", t.residual()},
+    j["targets"].push_back({{"theta_deg", t.theta * kDegreesPerRadian},
+                            {"target_per_mm", t.target},
+                            {"achieved_per_mm", t.achieved},
+                            {"residual_per_mm", t.residual()},
                             {"weight", t.weight}});
   j["conditions"] = json::array();
   for (const ConditionViolation& v : s.synthesis.conditions)
@@ -241,8 +246,8 @@ json vessel_report_json(const VesselJobResult& r, const std::vector<std::string>
   j["head"] = {{"depth_mm", s.depth},
                {"junction_radius_mm", s.junction_radius},
                {"junction_curvature_per_mm", s.junction_curvature},
-               {"junction_slope_deg", s.junction_slope * kDeg},
-               {"apex_slope_deg", s.apex_slope * kDeg}};
+               {"junction_slope_deg", s.junction_slope * kDegreesPerRadian},
+               {"apex_slope_deg", s.apex_slope * kDegreesPerRadian}};
   // Conversion: the same field names as the cam report.
   add_conversion_fields(j, c, c.curve.degree(), c.curve.size(), c.curve.knots().size());
   j["surfaces"] = {{"head", surface_json(r.surfaces.head)},

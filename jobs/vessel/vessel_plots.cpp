@@ -5,13 +5,13 @@
 #include <numbers>
 #include <string>
 
-#include "export/number_format.h"
+#include "src/number_text.h"
+#include "src/units.h"
 
 namespace polarform {
 
 namespace {
 
-constexpr double kDeg = 180 / std::numbers::pi;
 const char* kDesignColor = "#0072b2";
 const char* kPresetColor = "#999999";
 const char* kFlagColor = "#d55e00";
@@ -19,7 +19,8 @@ const char* kFlagColor = "#d55e00";
 Series curvature_series(std::string label, const std::vector<CurvatureSample>& samples,
                         Series::Style style, std::string color) {
   Series s{std::move(label), {}, {}, style, std::move(color)};
-  for (const CurvatureSample& c : samples) s.x.push_back(c.theta * kDeg), s.y.push_back(c.kappa);
+  for (const CurvatureSample& c : samples)
+    s.x.push_back(c.theta * kDegreesPerRadian), s.y.push_back(c.kappa);
   return s;
 }
 
@@ -69,15 +70,15 @@ Figure curvature_figure(const VesselJobResult& r) {
     kappa.add(curvature_series(s.preset->shape.name, s.preset->curvature, Series::Style::dashed,
                                kPresetColor));
     for (std::size_t i = 0; i < s.preset->shape.jumps.size(); ++i)
-      kappa.add_vertical_line(s.preset->shape.jumps[i].theta * kDeg,
+      kappa.add_vertical_line(s.preset->shape.jumps[i].theta * kDegreesPerRadian,
                               i == 0 ? "preset curvature jumps" : "", kFlagColor);
   }
   kappa.add(curvature_series("synthesised κ(θ)", s.curvature, Series::Style::line, kDesignColor));
   Series targets{"targets κ_k", {}, {}, Series::Style::markers, "#009e73"};
   Series residuals{"", {}, {}, Series::Style::markers, "#009e73"};
   for (const TargetResidual& t : s.synthesis.targets) {
-    targets.x.push_back(t.theta * kDeg), targets.y.push_back(t.target);
-    residuals.x.push_back(t.theta * kDeg), residuals.y.push_back(t.residual());
+    targets.x.push_back(t.theta * kDegreesPerRadian), targets.y.push_back(t.target);
+    residuals.x.push_back(t.theta * kDegreesPerRadian), residuals.y.push_back(t.residual());
   }
   kappa.add(std::move(targets));
   Plot& residual = f.add_panel();

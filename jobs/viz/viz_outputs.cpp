@@ -7,12 +7,12 @@
 #include "export/csv_writer.h"
 #include "export/html_report.h"
 #include "export/iges_writer.h"
-#include "export/number_format.h"
 #include "export/step_writer.h"
+#include "export/x3d_field_scene.h"
+#include "jobs/viz/viz_plots.h"
 #include "polarform_version.h"
 #include "src/error.h"
-#include "jobs/viz/viz_plots.h"
-#include "export/x3d_field_scene.h"
+#include "src/number_text.h"
 
 namespace polarform {
 

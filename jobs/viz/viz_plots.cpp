@@ -6,14 +6,13 @@
 #include <numbers>
 #include <set>
 
-#include "export/number_format.h"
 #include "export/plot_style.h"
+#include "src/number_text.h"
+#include "src/units.h"
 
 namespace polarform {
 
 namespace {
-
-constexpr double kDeg = 180.0 / std::numbers::pi;
 
 // The grid coordinates of a surface point: (φ or z, θ), θ in [0, 2π).
 struct Coordinates {
@@ -63,7 +62,7 @@ Figure viz_preview_figure(const VizJobResult& r) {
   const NurbsSurface& S = r.field.surface;
   const bool sph = r.grid.setup == GridSetup::spherical;
   const Eigen::VectorXd& a = sph ? r.grid.phi : r.grid.z;
-  const double a_unit = sph ? kDeg : 1.0;
+  const double a_unit = sph ? kDegreesPerRadian : 1.0;
   const std::string a_name = sph ? "polar angle φ [deg]" : "height z [mm]";
   Figure fig(800, 900);
   fig.title = "Field '" + r.grid.value_name + "' on a " + (sph ? "spherical" : "cylindrical") +
@@ -87,14 +86,14 @@ Figure viz_preview_figure(const VizJobResult& r) {
                c};
     for (int j = 0; j <= 400; ++j) {
       const double v = S.front_v() + (S.back_v() - S.front_v()) * j / 400.0;
-      fit.x.push_back(coordinates(r, u, v).theta * kDeg);
+      fit.x.push_back(coordinates(r, u, v).theta * kDegreesPerRadian);
       fit.y.push_back(value(r, u, v));
     }
     Series data{"", {}, {}, Series::Style::markers, c};
     for (Eigen::Index k = 0; k < a.size(); ++k)
       if (a[k] == level) {
         double t = std::fmod(r.grid.theta[k], 2 * std::numbers::pi);
-        data.x.push_back((t < 0 ? t + 2 * std::numbers::pi : t) * kDeg);
+        data.x.push_back((t < 0 ? t + 2 * std::numbers::pi : t) * kDegreesPerRadian);
         data.y.push_back(r.grid.value[k]);
       }
     rows.add(std::move(fit));
@@ -121,7 +120,11 @@ Figure viz_preview_figure(const VizJobResult& r) {
     };
     const double v = solve(unwrapped, S.front_v(), S.back_v(),
                            target < theta0 - 1e-9 ? target + 2 * std::numbers::pi : target);
-    Series fit{"θ = " + format_trimmed(target * kDeg, 3) + "°", {}, {}, Series::Style::line, c};
+    Series fit{"θ = " + format_trimmed(target * kDegreesPerRadian, 3) + "°",
+               {},
+               {},
+               Series::Style::line,
+               c};
     for (int i = 0; i <= 400; ++i) {
       const double u = S.front_u() + (S.back_u() - S.front_u()) * i / 400.0;
       fit.x.push_back(coordinates(r, u, v).a * a_unit);

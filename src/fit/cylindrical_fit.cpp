@@ -6,6 +6,7 @@
 #include "src/error.h"
 #include "src/fit/fit_pipeline.h"
 #include "src/nurbs/symbolic_product.h"
+#include "src/units.h"
 
 namespace polarform {
 
@@ -39,8 +40,8 @@ CylindricalFit fit_cylindrical(const Eigen::Matrix3Xd& points, const Cylindrical
       msg << "cylindrical fit: the data is not single-valued about the axis through ("
           << frame.frame.origin.transpose() << ") along (" << frame.frame.axes.col(2).transpose()
           << "): rays from it cross the data more than once at "
-          << describe_folds(check, "z", 1.0, "theta (deg)", 180.0 / std::numbers::pi / rbar)
-          << "; noise " << check.noise << ". Choose another axis, try the spherical fit, or use a "
+          << describe_folds(check, "z", 1.0, "theta (deg)", kDegreesPerRadian / rbar) << "; noise "
+          << check.noise << ". Choose another axis, try the spherical fit, or use a "
           << "general (parametric) surface fitter";
       throw InputError(msg.str());
     }

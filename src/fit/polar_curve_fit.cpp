@@ -7,15 +7,14 @@
 
 #include "src/error.h"
 #include "src/fit/circle_fit.h"
-#include "src/fit/orthogonal_coordinates.h"
 #include "src/fit/fit_pipeline.h"
+#include "src/fit/orthogonal_coordinates.h"
 #include "src/nurbs/symbolic_product.h"
+#include "src/units.h"
 
 namespace polarform {
 
 namespace {
-
-constexpr double kDeg = 180.0 / std::numbers::pi;
 
 NurbsCurve2d translated(const NurbsCurve2d& c, const Eigen::Vector2d& t) {
   Eigen::MatrixXd h = c.homogeneous().coefs();
@@ -60,7 +59,7 @@ PolarCurveFit fit_polar_curve(const Eigen::Matrix2Xd& points, const PolarFitOpti
       msg.precision(6);
       msg << "polar curve fit: the data is not single-valued about the centre (" << centre.x()
           << ", " << centre.y() << "): rays from it cross the data more than once at "
-          << describe_folds(check, "theta (deg)", kDeg) << "; noise " << check.noise
+          << describe_folds(check, "theta (deg)", kDegreesPerRadian) << "; noise " << check.noise
           << ". Choose another centre, split the data, or use a general (parametric) fitter";
       throw InputError(msg.str());
     }

@@ -6,12 +6,11 @@
 #include "src/error.h"
 #include "src/fit/fit_pipeline.h"
 #include "src/nurbs/symbolic_product.h"
+#include "src/units.h"
 
 namespace polarform {
 
 namespace {
-
-constexpr double kDeg = 180.0 / std::numbers::pi;
 
 PoleCap cap_to_global(PoleCap cap, const LocalFrame& f) {
   cap.surface = f.to_global(cap.surface);
@@ -57,8 +56,10 @@ SphericalFit fit_spherical(const Eigen::Matrix3Xd& points, const SphericalFitOpt
   const PoleTreatment north = resolve(opt.north, phi0 <= opt.pole_reach);
   const PoleTreatment south = resolve(opt.south, phi1 >= std::numbers::pi - opt.pole_reach);
   if ((north == PoleTreatment::cap || south == PoleTreatment::cap) && !range.closed)
-    throw InputError("spherical fit: a pole cap needs a closed fit, but the data leaves an "
-                     "azimuth gap of " + std::to_string(range.largest_gap * kDeg) + " deg");
+    throw InputError(
+        "spherical fit: a pole cap needs a closed fit, but the data leaves an "
+        "azimuth gap of " +
+        std::to_string(range.largest_gap * kDegreesPerRadian) + " deg");
   if (north == PoleTreatment::g0 || north == PoleTreatment::g1) phi0 = 0.0;
   if (south == PoleTreatment::g0 || south == PoleTreatment::g1) phi1 = std::numbers::pi;
   if (!(phi1 > phi0)) throw InputError("spherical fit: the data spans no polar angle");
@@ -72,8 +73,9 @@ SphericalFit fit_spherical(const Eigen::Matrix3Xd& points, const SphericalFitOpt
       msg.precision(6);
       msg << "spherical fit: the data is not single-valued about the origin ("
           << frame.frame.origin.transpose() << "): rays from it cross the data more than once at "
-          << describe_folds(check, "phi (deg)", kDeg, "theta (deg)", kDeg) << "; noise "
-          << check.noise << ". Choose another centre, try the cylindrical fit, or use a general "
+          << describe_folds(check, "phi (deg)", kDegreesPerRadian, "theta (deg)", kDegreesPerRadian)
+          << "; noise " << check.noise
+          << ". Choose another centre, try the cylindrical fit, or use a general "
           << "(parametric) surface fitter";
       throw InputError(msg.str());
     }

@@ -8,12 +8,11 @@
 #include <vector>
 
 #include "src/error.h"
+#include "src/units.h"
 
 namespace polarform {
 
 namespace {
-
-constexpr double kRad = std::numbers::pi / 180.0;
 
 std::string_view trim(std::string_view s) {
   while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r'))
@@ -117,10 +116,10 @@ ScalarGrid parse_scalar_grid(std::string_view text, const std::string& name) {
   };
   g.value = vec(rows[0], 1.0);
   if (g.setup == GridSetup::spherical) {
-    g.phi = vec(rows[1], kRad);
-    g.theta = vec(rows[2], kRad);
+    g.phi = vec(rows[1], kRadiansPerDegree);
+    g.theta = vec(rows[2], kRadiansPerDegree);
   } else {
-    g.theta = vec(rows[1], kRad);
+    g.theta = vec(rows[1], kRadiansPerDegree);
     g.z = vec(rows[2], 1.0);
   }
   return g;

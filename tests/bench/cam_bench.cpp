@@ -7,17 +7,16 @@
 #include "designers/cam/cam_analysis.h"
 #include "designers/cam/contour_polar_function.h"
 #include "designers/cam/plate_cam.h"
+#include "src/units.h"
 
 namespace polarform {
 namespace {
 
-constexpr double deg = std::numbers::pi / 180;
-
 SegmentSpec segment(SegmentKind kind, double from_deg, double to_deg, double lift, MotionLaw law) {
   SegmentSpec s;
   s.kind = kind;
-  s.start = from_deg * deg;
-  s.end = to_deg * deg;
+  s.start = from_deg * kRadiansPerDegree;
+  s.end = to_deg * kRadiansPerDegree;
   s.lift = lift;
   s.law = law;
   return s;

@@ -8,11 +8,12 @@
 #include "designers/cam/cam_design.h"
 #include "designers/cam/contour_polar_function.h"
 #include "designers/convert/polar_conversion.h"
+#include "src/units.h"
 
 namespace polarform {
 namespace {
 
-double deg(double d) { return d * std::numbers::pi / 180; }
+double deg(double d) { return d * kRadiansPerDegree; }
 
 CamDesign roller_example() {
   CamDesign d;

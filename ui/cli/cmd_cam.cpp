@@ -2,12 +2,13 @@
 // within the tolerance and write CAD files, plots and reports.
 #include <cstdio>
 #include <filesystem>
-#include <numbers>
 #include <iostream>
+#include <numbers>
 
+#include "jobs/cam/cam_outputs.h"
+#include "src/units.h"
 #include "ui/cli/commands.h"
 #include "ui/cli/validators.h"
-#include "jobs/cam/cam_outputs.h"
 
 namespace polarform::cli {
 
@@ -53,7 +54,7 @@ void run(const CamArgs& a) {
               c.tolerance, c.max_radial_error, c.max_normal_error);
   if (r.analysis) {
     std::printf("max pressure angle %.2f deg, min radius of curvature %.3f mm, undercut: %s\n",
-                r.analysis->max_pressure_angle.value * 180 / std::numbers::pi,
+                r.analysis->max_pressure_angle.value * kDegreesPerRadian,
                 r.analysis->min_convex_contour_radius.value,
                 r.analysis->undercut.empty() ? "none" : "YES");
   }

@@ -7,11 +7,12 @@
 #include <iostream>
 #include <numbers>
 
-#include "src/error.h"
-#include "ui/cli/commands.h"
-#include "ui/cli/progress_bar.h"
-#include "ui/cli/fit_arguments.h"
 #include "jobs/scan_cam/scan_cam_outputs.h"
+#include "src/error.h"
+#include "src/units.h"
+#include "ui/cli/commands.h"
+#include "ui/cli/fit_arguments.h"
+#include "ui/cli/progress_bar.h"
 
 namespace polarform::cli {
 
@@ -81,7 +82,6 @@ void run(const ScanCamArgs& a) {
               << " mm\n";
   if (a.quiet) return;
   const ScannedCam& s = r.scan;
-  constexpr double kDeg = 180 / std::numbers::pi;
   std::printf("%s scan, %ld contour points; centre: %s\n", s.profile.three_d ? "3D" : "2D",
               static_cast<long>(s.contour.cols()), s.profile.centre_reason.c_str());
   std::printf("profile: degree %d, %d control points, rms %.3g mm; noise floor %.3g mm\n",
@@ -92,7 +92,7 @@ void run(const ScanCamArgs& a) {
       s.displacement.height.degree(), s.displacement.dof, s.displacement.noise,
       s.displacement.standard_error, s.base_radius);
   if (s.alignment)
-    std::printf("phase to nominal %.4f deg%s\n", s.alignment->phase * kDeg,
+    std::printf("phase to nominal %.4f deg%s\n", s.alignment->phase * kDegreesPerRadian,
                 s.mirrored ? " (mirrored)" : "");
   if (r.comparison)
     std::printf(

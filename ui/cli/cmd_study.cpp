@@ -4,10 +4,10 @@
 #include <iostream>
 #include <sstream>
 
-#include "export/number_format.h"
+#include "jobs/study/study_job.h"
+#include "src/number_text.h"
 #include "ui/cli/commands.h"
 #include "ui/cli/progress_bar.h"
-#include "jobs/study/study_job.h"
 
 namespace polarform::cli {
 

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <optional>
 
-#include "export/number_format.h"
 #include "jobs/project/cam_project.h"
+#include "src/number_text.h"
 
 namespace polarform::cli {
 

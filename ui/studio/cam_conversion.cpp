@@ -7,18 +7,12 @@
 #include "designers/cam/contour_polar_function.h"
 #include "designers/convert/conversion_error.h"
 #include "jobs/cam/cam_job.h"
+#include "src/units.h"
 
 namespace polarform::studio {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr int kErrorSamples = 720;
-
-// A polar angle in degrees within [0, 360).
-double degrees_in_turn(double radians) {
-  const double d = std::fmod(radians / kDeg, 360.0);
-  return d < 0 ? d + 360.0 : d;
-}
 
 }  // namespace
 

@@ -12,6 +12,8 @@
 #include "export/x3d_writer.h"
 #include "jobs/cam/cam_job.h"
 #include "jobs/cam/cam_outputs.h"
+#include "src/number_text.h"
+#include "src/units.h"
 #include "ui/studio/cam_workspace.h"
 #include "ui/studio/guarded.h"
 
@@ -113,7 +115,7 @@ void CamWorkspace::export_to(const ExportRequest& request, const std::filesystem
       log().info("Exported " + file.string() + ": degree-" +
                  std::to_string(job.capped->curve.degree()) +
                  " profile (the project caps the degree), measured radial error " +
-                 std::to_string(job.capped->max_radial_error * 1e3) + " µm");
+                 number_text(to_micrometres(job.capped->max_radial_error)) + " µm");
     else
       log().info("Exported " + file.string());
   });

@@ -4,10 +4,10 @@
 #include <cmath>
 #include <numbers>
 
+#include "src/units.h"
+
 namespace polarform::studio {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 // Angles over [a, b] (ends included) at roughly `per_revolution` samples per 2π.
 std::vector<double> segment_angles(double a, double b, int per_revolution) {
@@ -25,12 +25,12 @@ void sample_plate(CamResults& r, int samples) {
   for (int k = 0; k < static_cast<int>(segments.size()); ++k)
     for (double t : segment_angles(segments[k].start(), segments[k].end(), samples)) {
       const CamSample c = cam.sample_in_segment(k, t);
-      r.motion.theta_deg.push_back(t / kDeg);
+      r.motion.theta_deg.push_back(t * kDegreesPerRadian);
       r.motion.s.push_back(c.s);
       r.motion.v.push_back(c.v);
       r.motion.a.push_back(c.a);
       r.motion.j.push_back(c.j);
-      r.motion.pressure_deg.push_back(c.pressure_angle / kDeg);
+      r.motion.pressure_deg.push_back(c.pressure_angle * kDegreesPerRadian);
       Eigen::Vector2d contour[2], pitch[1];
       cam.contour_in_segment(k, t, 1, contour);
       cam.pitch(t, 0, pitch);
@@ -53,12 +53,13 @@ void sample_barrel(CamResults& r, int samples) {
     for (double t : segment_angles(seg.start(), seg.end(), samples)) {
       double d[4];
       seg.derivatives(t, 3, d);
-      r.motion.theta_deg.push_back(t / kDeg);
+      r.motion.theta_deg.push_back(t * kDegreesPerRadian);
       r.motion.s.push_back(d[0]);
       r.motion.v.push_back(d[1]);
       r.motion.a.push_back(d[2]);
       r.motion.j.push_back(d[3]);
-      r.motion.pressure_deg.push_back(cam.pressure_angle(t, cam.pitch_radius()) / kDeg);
+      r.motion.pressure_deg.push_back(cam.pressure_angle(t, cam.pitch_radius()) *
+                                      kDegreesPerRadian);
     }
 }
 
@@ -83,7 +84,7 @@ CamResults compute_cam_results(const CamDesign& design, int samples) {
   r.issues = check_continuity(*r.program, 3);
   const auto& segments = r.program->segments();
   for (std::size_t k = 1; k < segments.size(); ++k)
-    r.boundaries_deg.push_back(segments[k].start() / kDeg);
+    r.boundaries_deg.push_back(segments[k].start() * kDegreesPerRadian);
   return r;
 }
 

@@ -8,6 +8,7 @@
 
 #include "designers/cam/base_radius.h"
 #include "designers/cam/cam_analysis.h"
+#include "src/number_text.h"
 #include "ui/studio/cam_view_settings.h"
 #include "ui/studio/guarded.h"
 #include "ui/studio/widgets.h"
@@ -77,7 +78,7 @@ bool CamSettingsPanel::draw_base_radius_search(CamDesign& d, const CamViewSettin
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip(
           "The smallest Rb that keeps the pressure angle within %.1f° with no undercut",
-          view.pressure_angle_limit / kDegree);
+          view.pressure_angle_limit * kDegreesPerRadian);
     return false;
   }
   bool changed = false;
@@ -88,8 +89,8 @@ bool CamSettingsPanel::draw_base_radius_search(CamDesign& d, const CamViewSettin
         minimum_base_radius(make_program(d), d.follower, d.rotation, req, uniform_angles(720));
     d.base_radius = r.base_radius;
     changed = true;
-    log.info("Base radius set to " + std::to_string(r.base_radius) + " mm (max pressure angle " +
-             std::to_string(r.max_pressure_angle.value / kDegree) + "°)");
+    log.info("Base radius set to " + number_text(r.base_radius) + " mm (max pressure angle " +
+             degrees_text(r.max_pressure_angle.value) + ")");
   });
   return changed;
 }

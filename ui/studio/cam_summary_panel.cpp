@@ -21,7 +21,7 @@ void row(const char* name, const char* value, bool bad = false) {
 
 std::string at(double value, const char* unit, double theta) {
   char buffer[96];
-  std::snprintf(buffer, sizeof buffer, "%.4g %s at %.2f°", value, unit, theta / kDegree);
+  std::snprintf(buffer, sizeof buffer, "%.4g %s at %.2f°", value, unit, theta * kDegreesPerRadian);
   return buffer;
 }
 
@@ -39,9 +39,10 @@ void draw_cam_summary(const CamResults& r, const CamViewSettings& view) {
   if (r.analysis) {
     const CamAnalysis& a = *r.analysis;
     if (r.design.follower.kind != FollowerKind::FlatFaced) {
-      const double phi = a.max_pressure_angle.value / kDegree;
+      const double phi = a.max_pressure_angle.value * kDegreesPerRadian;
       std::snprintf(buffer, sizeof buffer, "%.2f° at %.2f° (limit %.1f°)", phi,
-                    a.max_pressure_angle.theta / kDegree, view.pressure_angle_limit / kDegree);
+                    a.max_pressure_angle.theta * kDegreesPerRadian,
+                    view.pressure_angle_limit * kDegreesPerRadian);
       row("max |pressure angle|", buffer, a.max_pressure_angle.value > view.pressure_angle_limit);
     }
     const auto radius = [&](const char* name, const Extremum& e) {
@@ -59,7 +60,7 @@ void draw_cam_summary(const CamResults& r, const CamViewSettings& view) {
       std::string ranges;
       for (const AngleRange& u : a.undercut) {
         std::snprintf(buffer, sizeof buffer, "%s%.1f°–%.1f°", ranges.empty() ? "" : ", ",
-                      u.from / kDegree, u.to / kDegree);
+                      u.from * kDegreesPerRadian, u.to * kDegreesPerRadian);
         ranges += buffer;
       }
       row("undercut", ranges.c_str(), true);

@@ -227,12 +227,12 @@ std::string CamWorkspace::numbers() const {
   out << "segments=" << edit.cam.segments.size()
       << "\nvalid=" << (design_error_.empty() && results_ ? 1 : 0) << "\n";
   for (std::size_t k = 1; k < edit.cam.segments.size(); ++k)
-    out << "boundary_" << k << "_deg=" << edit.cam.segments[k].start / kDegree << "\n";
+    out << "boundary_" << k << "_deg=" << edit.cam.segments[k].start * kDegreesPerRadian << "\n";
   if (results_ && design_error_.empty()) {
     out << "stroke_mm=" << results_->program->stroke() << "\n";
     if (results_->analysis) {
-      out << "max_pressure_angle_deg=" << results_->analysis->max_pressure_angle.value / kDegree
-          << "\n";
+      out << "max_pressure_angle_deg="
+          << results_->analysis->max_pressure_angle.value * kDegreesPerRadian << "\n";
       out << "min_convex_contour_radius_mm=" << results_->analysis->min_convex_contour_radius.value
           << "\n";
     }

@@ -78,7 +78,7 @@ void ConversionPanel::draw_result(const CamConversion* c, const std::string& err
   std::snprintf(buffer, sizeof buffer, "%.4g µm", s.max_normal_error * 1e3);
   row("max normal error", buffer);
   std::snprintf(buffer, sizeof buffer, "%.2f°",
-                std::remainder(s.worst_angle, 2 * std::numbers::pi) / kDegree);
+                std::remainder(s.worst_angle, 2 * std::numbers::pi) * kDegreesPerRadian);
   row("worst at polar angle", buffer);
   std::snprintf(buffer, sizeof buffer, "%.3g rad", s.max_tangent_jump);
   row("tangent jump at junctions", buffer);

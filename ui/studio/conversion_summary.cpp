@@ -5,6 +5,8 @@
 #include <numbers>
 #include <sstream>
 
+#include "src/units.h"
+
 namespace polarform::studio {
 
 ConversionSummary summarize(const PolarConversion& c) {
@@ -39,7 +41,7 @@ std::string ConversionSummary::numbers() const {
   out << "arcs=" << arcs << "\ndegree=" << degree << "\ncontrol_points=" << control_points
       << "\ntolerance_mm=" << tolerance << "\nmax_radial_error_mm=" << max_radial_error
       << "\nmax_normal_error_mm=" << max_normal_error << "\nworst_angle_deg="
-      << std::remainder(worst_angle, 2 * std::numbers::pi) * 180.0 / std::numbers::pi << "\n";
+      << std::remainder(worst_angle, 2 * std::numbers::pi) * kDegreesPerRadian << "\n";
   return out.str();
 }
 

@@ -11,8 +11,9 @@
 #include "export/iges_writer.h"
 #include "export/step_writer.h"
 #include "export/x3d_writer.h"
-#include "src/io/point_cloud.h"
 #include "jobs/fit/fit_outputs.h"
+#include "src/io/point_cloud.h"
+#include "src/number_text.h"
 #include "ui/studio/colors.h"
 #include "ui/studio/guarded.h"
 #include "ui/studio/splitter.h"
@@ -141,7 +142,7 @@ void FitWorkspace::update() {
       fit_ = std::move(*outcome->value);
       fit_error_.clear();
       show_fit();
-      log().info("Fit finished in " + std::to_string(fit_seconds_) + " s: " + fit_->fit.reason);
+      log().info("Fit finished in " + number_text(fit_seconds_) + " s: " + fit_->fit.reason);
     } else if (outcome->cancelled) {
       log().info("Fit cancelled");
     } else if (outcome->error) {

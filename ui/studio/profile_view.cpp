@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "src/message_text.h"
+#include "src/number_text.h"
 #include "ui/studio/colors.h"
 #include "ui/studio/opaque_fill.h"
 #include "ui/studio/polyline_simplify.h"
@@ -224,8 +224,9 @@ void ProfileView::draw_legend(const CamViewSettings& view, ImVec2 min, ImDrawLis
     dl->AddRectFilled(ImVec2(x0, o.y), ImVec2(x1, o.y + h), sequential_color((i + 0.5) / steps));
   }
   dl->AddRectFilled(ImVec2(o.x + w, o.y), ImVec2(o.x + w + fh, o.y + h), color::error);
-  const std::string text =
-      "|pressure angle|: 0 … " + number_text(view.pressure_angle_limit / kDegree) + "°, red above";
+  const std::string text = "|pressure angle|: 0 … " +
+                           number_text(view.pressure_angle_limit * kDegreesPerRadian) +
+                           "°, red above";
   dl->AddText(ImVec2(o.x, o.y + h + 2), color::text, text.c_str());
 }
 
@@ -249,11 +250,11 @@ void ProfileView::hover_readout(const CamResults& r, const CamViewSettings& view
   }
   const double k = p.curvature[best];
   ImGui::BeginTooltip();
-  ImGui::Text("cam angle θ = %.2f°", p.theta[best] / kDegree);
+  ImGui::Text("cam angle θ = %.2f°", p.theta[best] * kDegreesPerRadian);
   ImGui::Text("radius R = %.4f mm", p.contour[best].norm());
   if (r.plate->follower().kind != FollowerKind::FlatFaced)
-    ImGui::Text("pressure angle = %.2f° (limit %.1f°)", p.pressure[best] / kDegree,
-                view.pressure_angle_limit / kDegree);
+    ImGui::Text("pressure angle = %.2f° (limit %.1f°)", p.pressure[best] * kDegreesPerRadian,
+                view.pressure_angle_limit * kDegreesPerRadian);
   if (k != 0.0)
     ImGui::Text("radius of curvature = %.4g mm (%s)", 1.0 / std::abs(k),
                 k > 0 ? "convex" : "concave");
@@ -277,14 +278,14 @@ void ProfileView::draw_barrel(const CamResults& r, const CamViewSettings& view, 
   const auto at = [&](double x, double z) { return view2d_.to_screen(x, z); };
   std::vector<ImVec2> centre;
   for (std::size_t i = 0; i < m.theta_deg.size(); ++i)
-    centre.push_back(at(rc * m.theta_deg[i] * kDegree, cam.z0() + m.s[i]));
+    centre.push_back(at(rc * m.theta_deg[i] * kRadiansPerDegree, cam.z0() + m.s[i]));
   dl->AddPolyline(centre.data(), static_cast<int>(centre.size()), palette_color(0, 0.6f), 0, 1.0f);
   // Groove walls at the pitch radius from the library's exact roller envelope, developed onto
   // the pitch cylinder (x = Rc · cam angle).
   for (int side : {-1, 1}) {
     std::vector<ImVec2> wall;
     for (std::size_t i = 0; i < m.theta_deg.size(); i += 2) {
-      const double theta = m.theta_deg[i] * kDegree;
+      const double theta = m.theta_deg[i] * kRadiansPerDegree;
       const Eigen::Vector3d w = cam.groove_wall_point(theta, rc, side);
       const double phi = std::atan2(w.y(), w.x());
       const double t = unwrapped(sense(cam.rotation()) * (kPi / 2 - phi), theta);

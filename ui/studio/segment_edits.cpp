@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "src/error.h"
+#include "src/number_text.h"
 
 namespace polarform::studio {
 namespace {
@@ -16,12 +17,6 @@ void check_index(const std::vector<SegmentSpec>& segments, int i) {
   if (i >= 0 && i < static_cast<int>(segments.size())) return;
   throw InputError("no segment " + std::to_string(i + 1) + " (the cam has " +
                    std::to_string(segments.size()) + ")");
-}
-
-std::string degrees(double radians) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.3g°", radians * 180.0 / std::numbers::pi);
-  return buffer;
 }
 
 }  // namespace
@@ -45,9 +40,9 @@ int insert_dwell_after(std::vector<SegmentSpec>& segments, int i) {
   check_index(segments, i);
   SegmentSpec& s = segments[i];
   if (s.end - s.start < 2.0 * kMinSegmentWidth)
-    throw InputError("segment " + std::to_string(i + 1) + " is " + degrees(s.end - s.start) +
+    throw InputError("segment " + std::to_string(i + 1) + " is " + degrees_text(s.end - s.start) +
                      " wide; splitting it would leave parts narrower than " +
-                     degrees(kMinSegmentWidth));
+                     degrees_text(kMinSegmentWidth));
   const double middle = 0.5 * (s.start + s.end);
   SegmentSpec dwell;
   dwell.kind = SegmentKind::Dwell;

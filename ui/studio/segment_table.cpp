@@ -109,7 +109,7 @@ bool SegmentTable::draw_row(std::vector<SegmentSpec>& segments, int i) {
   ImGui::TableNextColumn();
   ImGui::SetNextItemWidth(-FLT_MIN);
   if (i == 0) {
-    ImGui::TextDisabled("%.2f", s.start / kDegree);
+    ImGui::TextDisabled("%.2f", s.start * kDegreesPerRadian);
   } else {
     double start = s.start;
     if (drag_angle("##start", start, 0.0, 360.0)) {
@@ -120,7 +120,7 @@ bool SegmentTable::draw_row(std::vector<SegmentSpec>& segments, int i) {
   ImGui::TableNextColumn();
   ImGui::SetNextItemWidth(-FLT_MIN);
   if (i == last) {
-    ImGui::TextDisabled("%.2f", segments[i].end / kDegree);
+    ImGui::TextDisabled("%.2f", segments[i].end * kDegreesPerRadian);
   } else {
     double end = segments[i].end;
     if (drag_angle("##end", end, 0.0, 360.0)) {

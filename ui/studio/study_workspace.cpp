@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "src/number_text.h"
 #include "ui/studio/colors.h"
 #include "ui/studio/guarded.h"
 #include "ui/studio/splitter.h"
@@ -55,7 +56,7 @@ void StudyWorkspace::update() {
       result_ = std::move(*outcome->value);
       result_input_ = input_;
       log().info("Study: " + std::to_string(result_->rows.size()) + " tolerances in " +
-                 std::to_string(outcome->seconds).substr(0, 4) + " s");
+                 number_text(outcome->seconds) + " s");
     } else if (outcome->error) {
       error_ = failure_text("Study", outcome->error);
       log().error(error_);
@@ -156,7 +157,7 @@ void StudyWorkspace::draw_plots(ImVec2 size) {
   const StudyColumns c = columns(*result_);
   std::vector<double> angle, rqb, minimax, printed;
   for (const DeviationRow& d : result_->deviation) {
-    angle.push_back(d.arc_angle / kDegree);
+    angle.push_back(d.arc_angle * kDegreesPerRadian);
     rqb.push_back(d.rqb);
     minimax.push_back(d.quartic_minimax);
     printed.push_back(d.quartic_printed);

@@ -4,7 +4,7 @@
 #include <numbers>
 #include <string>
 
-#include "src/message_text.h"
+#include "src/number_text.h"
 #include "ui/studio/colors.h"
 #include "ui/studio/segment_edits.h"
 #include "ui/studio/widgets.h"
@@ -62,7 +62,7 @@ bool SvajPanel::draw(const CamResults& r, const CamViewSettings& view,
       for (const ContinuityIssue& issue : r.issues) {
         if (issue.derivative != k) continue;
         const double f = unit_factor_[k];
-        for (double x : {issue.angle / kDegree, issue.angle == 0.0 ? 360.0 : -1.0}) {
+        for (double x : {issue.angle * kDegreesPerRadian, issue.angle == 0.0 ? 360.0 : -1.0}) {
           if (x < 0) continue;
           spec.points.push_back({x, issue.before_value * f, issue.message(), color::error});
           spec.points.push_back({x, issue.after_value * f, issue.message(), color::error});
@@ -70,7 +70,7 @@ bool SvajPanel::draw(const CamResults& r, const CamViewSettings& view,
         }
       }
     } else {
-      const double limit = view.pressure_angle_limit / kDegree;
+      const double limit = view.pressure_angle_limit * kDegreesPerRadian;
       if (plate && r.design.follower.kind != FollowerKind::FlatFaced) {
         spec.levels.push_back({limit, "limit " + number_text(limit) + "°", color::error});
         spec.levels.push_back({-limit, "", color::error});
@@ -84,7 +84,7 @@ bool SvajPanel::draw(const CamResults& r, const CamViewSettings& view,
     // The plots may show the last valid design while the edited one has fewer boundaries.
     if (events.dragged_marker >= 0 &&
         events.dragged_marker + 1 < static_cast<int>(segments.size())) {
-      set_boundary(segments, events.dragged_marker + 1, events.marker_x * kDegree);
+      set_boundary(segments, events.dragged_marker + 1, events.marker_x * kRadiansPerDegree);
       changed = true;
     }
   }

@@ -4,12 +4,12 @@
 #include <cmath>
 #include <numbers>
 
+#include "src/number_text.h"
+#include "src/units.h"
 #include "ui/studio/colors.h"
 
 namespace polarform::studio {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 PlotLine line(const char* label, const XYSeries& s, int palette, float thickness = 2.0f) {
   return {label, s.x, s.y, palette_color(palette), thickness};
@@ -25,7 +25,7 @@ void VesselPlots::draw_meridian(const VesselResults& r, ImVec2 size) {
   const double radius = r.project.design.radius;
   double depth = 0.0;
   for (std::size_t i = 0; i < r.radius.x.size(); ++i)
-    depth = std::max(depth, r.radius.y[i] * std::sin(r.radius.x[i] * kDeg));
+    depth = std::max(depth, r.radius.y[i] * std::sin(r.radius.x[i] * kRadiansPerDegree));
   const double below = 0.35 * radius;  // a stretch of the cylinder below the junction plane
   meridian_view_.set_canvas(min, max,
                             Box2{-1.1 * radius, -below, 1.1 * radius, depth * 1.1 + 0.05 * radius});
@@ -36,7 +36,7 @@ void VesselPlots::draw_meridian(const VesselResults& r, ImVec2 size) {
   const auto meridian = [&](const XYSeries& s, ImU32 c, float w) {
     std::vector<ImVec2> pts;
     for (std::size_t i = 0; i < s.x.size(); ++i) {
-      const double t = s.x[i] * kDeg;
+      const double t = s.x[i] * kRadiansPerDegree;
       pts.push_back(at(s.y[i] * std::cos(t), s.y[i] * std::sin(t)));
     }
     dl->AddPolyline(pts.data(), static_cast<int>(pts.size()), c, 0, w);
@@ -69,8 +69,8 @@ void VesselPlots::draw_curvature(const VesselResults& r, ImVec2 size) {
   spec.lines.push_back(line("design κ(θ)", r.kappa, 0, 2.0f));
   for (std::size_t i = 0; i < r.targets.x.size(); ++i)
     spec.points.push_back({r.targets.x[i], r.targets.y[i],
-                           "target κ = " + std::to_string(r.targets.y[i]) + " 1/mm, achieved " +
-                               std::to_string(r.achieved.y[i]),
+                           "target κ = " + number_text(r.targets.y[i]) + " 1/mm, achieved " +
+                               number_text(r.achieved.y[i]),
                            palette_color(2), r.targets.x.size() > 24});
   spec.markers.push_back({90.0, "apex", 0, false});
   draw_plot(spec, curvature_x_, curvature_y_, size);

@@ -2,18 +2,17 @@
 
 #include <numbers>
 
+#include "src/units.h"
 #include "ui/studio/guarded.h"
 
 namespace polarform::studio {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
-
 XYSeries radius_series(const PolarFunction& f) {
   XYSeries s;
   for (int i = 0; i <= 720; ++i) {
     const double theta = f.start + (f.end - f.start) * i / 720;
-    s.x.push_back(theta / kDeg);
+    s.x.push_back(theta * kDegreesPerRadian);
     s.y.push_back(f(theta));
   }
   return s;
@@ -22,7 +21,7 @@ XYSeries radius_series(const PolarFunction& f) {
 XYSeries curvature_series(const std::vector<CurvatureSample>& samples) {
   XYSeries s;
   for (const CurvatureSample& c : samples) {
-    s.x.push_back(c.theta / kDeg);
+    s.x.push_back(c.theta * kDegreesPerRadian);
     s.y.push_back(c.kappa);
   }
   return s;
@@ -47,11 +46,11 @@ VesselResults compute_vessel_results(const VesselProject& project) {
   r.radius = radius_series(s.profile);
   r.kappa = curvature_series(s.curvature);
   for (const TargetResidual& t : s.synthesis.targets) {
-    r.targets.x.push_back(t.theta / kDeg);
+    r.targets.x.push_back(t.theta * kDegreesPerRadian);
     r.targets.y.push_back(t.target);
-    r.achieved.x.push_back(t.theta / kDeg);
+    r.achieved.x.push_back(t.theta * kDegreesPerRadian);
     r.achieved.y.push_back(t.achieved);
-    r.residuals.x.push_back(t.theta / kDeg);
+    r.residuals.x.push_back(t.theta * kDegreesPerRadian);
     r.residuals.y.push_back(t.residual());
   }
   stress_series(s.stresses, r.meridional, r.hoop);

@@ -133,9 +133,9 @@ void VesselWorkspace::draw_summary() {
   ImGui::Text("max |κ − κₖ| = %.3g 1/mm, objective %.3g", worst, s.objective);
   ImGui::Text("stationarity %.2g, max condition violation %.2g", s.stationarity, s.max_violation);
   ImGui::Text("depth %.4g mm, smallest R %.4g mm at %.1f°", results_->solution.depth, s.min_radius,
-              s.min_radius_angle / kDegree);
+              s.min_radius_angle * kDegreesPerRadian);
   ImGui::Text("junction: κ = %.4g 1/mm, slope %.3g°", results_->solution.junction_curvature,
-              results_->solution.junction_slope / kDegree);
+              results_->solution.junction_slope * kDegreesPerRadian);
   if (results_->conversion)
     ImGui::Text("NURBS: %s", results_->conversion->text().c_str());
   else if (!results_->conversion_error.empty())

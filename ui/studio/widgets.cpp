@@ -27,11 +27,11 @@ bool drag_number(const char* label, double& value, double speed, double min, dou
 }
 
 bool drag_angle(const char* label, double& radians, double min_deg, double max_deg) {
-  double deg = radians / kDegree;
+  double deg = radians * kDegreesPerRadian;
   if (!ImGui::DragScalar(label, ImGuiDataType_Double, &deg, 0.25f, &min_deg, &max_deg, "%.2f°",
                          ImGuiSliderFlags_AlwaysClamp))
     return false;
-  radians = deg * kDegree;
+  radians = deg * kRadiansPerDegree;
   return true;
 }
 

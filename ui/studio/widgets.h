@@ -6,9 +6,9 @@
 #include <span>
 #include <string_view>
 
-namespace polarform::studio {
+#include "src/units.h"
 
-inline constexpr double kDegree = 3.14159265358979323846 / 180.0;
+namespace polarform::studio {
 
 bool input_number(const char* label, double& value, double step = 0.1, const char* format = "%.4g");
 bool drag_number(const char* label, double& value, double speed, double min, double max,

@@ -1,29 +1,30 @@
 // Cam programs: validation (gap, overlap, coverage, lift, law, closure) with messages naming
 // segments and angles; levels, speeds in rpm, the exact piecewise B-spline form, and continuity
 // diagnostics with angle and jump size.
+#include "designers/cam/cam_program.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
 #include "designers/cam/cam_analysis.h"
-#include "designers/cam/cam_program.h"
 #include "designers/cam/continuity.h"
 #include "src/error.h"
+#include "src/units.h"
 
 namespace polarform {
 namespace {
 
 constexpr double pi = std::numbers::pi;
-constexpr double deg = pi / 180;
 
 SegmentSpec segment(std::string name, SegmentKind kind, double from_deg, double to_deg, double lift = 0,
                     MotionLaw law = MotionLaw::Cycloidal) {
   SegmentSpec s;
   s.name = std::move(name);
   s.kind = kind;
-  s.start = from_deg * deg;
-  s.end = to_deg * deg;
+  s.start = from_deg * kRadiansPerDegree;
+  s.end = to_deg * kRadiansPerDegree;
   s.lift = lift;
   s.law = law;
   return s;
@@ -46,17 +47,17 @@ std::string error_of(std::vector<SegmentSpec> specs) {
 
 TEST(CamProgram, ValidationNamesSegmentsAndAngles) {
   auto gap = drdr(MotionLaw::Cycloidal);
-  gap[2].start = 185 * deg;
+  gap[2].start = 185 * kRadiansPerDegree;
   EXPECT_EQ(error_of(gap), "cam program: gap between segment 'rise' (ends at 180°) and segment 'dwell 2' (starts at 185°)");
   auto overlap = drdr(MotionLaw::Cycloidal);
-  overlap[1].end = 200 * deg;
+  overlap[1].end = 200 * kRadiansPerDegree;
   EXPECT_EQ(error_of(overlap),
             "cam program: segment 'rise' (90° to 200°) overlaps segment 'dwell 2' (180° to 270°)");
   auto short_end = drdr(MotionLaw::Cycloidal);
-  short_end[3].end = 350 * deg;
+  short_end[3].end = 350 * kRadiansPerDegree;
   EXPECT_NE(error_of(short_end).find("the last segment, segment 'return', ends at 350°"), std::string::npos);
   auto late_start = drdr(MotionLaw::Cycloidal);
-  late_start[0].start = 10 * deg;
+  late_start[0].start = 10 * kRadiansPerDegree;
   EXPECT_NE(error_of(late_start).find("the first segment, segment 'dwell 1', starts at 10°"), std::string::npos);
   auto negative = drdr(MotionLaw::Cycloidal);
   negative[1].lift = -10;
@@ -73,7 +74,7 @@ TEST(CamProgram, ValidationNamesSegmentsAndAngles) {
             "starts with");
   auto unnamed = drdr(MotionLaw::Cycloidal);
   unnamed[1].name.clear();
-  unnamed[1].end = 170 * deg;
+  unnamed[1].end = 170 * kRadiansPerDegree;
   EXPECT_NE(error_of(unnamed).find("segment 'segment 2' (ends at 170°)"), std::string::npos);
   EXPECT_NE(error_of({}).find("no segments"), std::string::npos);
 }
@@ -83,11 +84,11 @@ TEST(CamProgram, SortsSegmentsAndMeasuresFromTheLowestLevel) {
   std::swap(specs[0], specs[3]);  // order in the list does not matter
   const CamProgram p(specs);
   EXPECT_EQ(p.segments()[0].name(), "dwell 1");
-  EXPECT_EQ(p(45 * deg), 0.0);
-  EXPECT_EQ(p(200 * deg), 10.0);
-  EXPECT_NEAR(p(135 * deg), 5.0, 1e-14);
+  EXPECT_EQ(p(45 * kRadiansPerDegree), 0.0);
+  EXPECT_EQ(p(200 * kRadiansPerDegree), 10.0);
+  EXPECT_NEAR(p(135 * kRadiansPerDegree), 5.0, 1e-14);
   EXPECT_EQ(p.stroke(), 10.0);
-  EXPECT_NEAR(p(135 * deg + 2 * pi), 5.0, 1e-13);  // periodic
+  EXPECT_NEAR(p(135 * kRadiansPerDegree + 2 * pi), 5.0, 1e-13);  // periodic
   // Starting with the return: the follower is at the top at θ = 0.
   const CamProgram q({segment("ret", SegmentKind::Return, 0, 180, 6), segment("up", SegmentKind::Rise, 180, 360, 6)});
   EXPECT_EQ(q(0.0), 6.0);
@@ -96,7 +97,7 @@ TEST(CamProgram, SortsSegmentsAndMeasuresFromTheLowestLevel) {
 // At 60 rpm ω = 2π rad/s: v = s' ω, a = s'' ω², j = s''' ω³.
 TEST(CamProgram, KinematicsFromRpm) {
   const CamProgram p(drdr(MotionLaw::Cycloidal));
-  const double theta = 120 * deg, omega = 2 * pi;
+  const double theta = 120 * kRadiansPerDegree, omega = 2 * pi;
   double s[4];
   p.derivatives(theta, 3, s);
   const Kinematics k = p.kinematics(theta, 60.0);
@@ -105,7 +106,7 @@ TEST(CamProgram, KinematicsFromRpm) {
   EXPECT_NEAR(k.acceleration, s[2] * omega * omega, 1e-11);
   EXPECT_NEAR(k.jerk, s[3] * omega * omega * omega, 1e-9);
   // Cycloidal peak velocity: Cv h / β = 2 * 10 / (π/2) mm/rad at mid-rise.
-  EXPECT_NEAR(p.kinematics(135 * deg, 60.0).velocity, 40 / pi * omega, 1e-12);
+  EXPECT_NEAR(p.kinematics(135 * kRadiansPerDegree, 60.0).velocity, 40 / pi * omega, 1e-12);
   EXPECT_THROW(p.kinematics(0.0, 0.0), InputError);
 }
 
@@ -113,7 +114,8 @@ TEST(CamProgram, KinematicsFromRpm) {
 TEST(Continuity, HarmonicNextToDwellReportsAccelerationJumps) {
   const std::vector<ContinuityIssue> issues = check_continuity(CamProgram(drdr(MotionLaw::SimpleHarmonic)));
   ASSERT_EQ(issues.size(), 4u);
-  const double expected_angle[4] = {0, 90 * deg, 180 * deg, 270 * deg};
+  const double expected_angle[4] = {0, 90 * kRadiansPerDegree, 180 * kRadiansPerDegree,
+                                    270 * kRadiansPerDegree};
   const double expected_jump[4] = {-20, 20, 20, -20};
   const char* before[4] = {"return", "dwell 1", "rise", "dwell 2"};
   for (int i = 0; i < 4; ++i) {
@@ -149,7 +151,8 @@ TEST(CamProgram, ExactBSplineOfAPolynomialProgram) {
   EXPECT_EQ(f.degree(), 6);
   EXPECT_EQ(f.front(), 0.0);
   EXPECT_EQ(f.back(), 2 * pi);
-  for (double b : {90 * deg, 180 * deg, 270 * deg}) EXPECT_EQ(multiplicity(f.knots(), b), 6);
+  for (double b : {90 * kRadiansPerDegree, 180 * kRadiansPerDegree, 270 * kRadiansPerDegree})
+    EXPECT_EQ(multiplicity(f.knots(), b), 6);
   for (int i = 0; i < 3600; ++i) {  // at 2π the program wraps to θ = 0, the spline ends its last piece
     const double theta = 2 * pi * i / 3600;
     double s[4];
@@ -169,8 +172,9 @@ TEST(CamProgram, MotionExtremaAreRefinedOffTheGrid) {
   const std::vector<double> grid = uniform_angles(37);  // 9.73° spacing, misses 135°
   const MotionExtrema m = motion_extrema(p, grid);
   EXPECT_NEAR(m.velocity.value, 2 * 10 / (pi / 2), 1e-9);
-  EXPECT_TRUE(std::abs(m.velocity.theta - 135 * deg) < 1e-5 || std::abs(m.velocity.theta - 315 * deg) < 1e-5)
-      << m.velocity.theta / deg;
+  EXPECT_TRUE(std::abs(m.velocity.theta - 135 * kRadiansPerDegree) < 1e-5 ||
+              std::abs(m.velocity.theta - 315 * kRadiansPerDegree) < 1e-5)
+      << m.velocity.theta * kDegreesPerRadian;
   EXPECT_NEAR(m.acceleration.value, 2 * pi * 10 / std::pow(pi / 2, 2), 1e-9);
   EXPECT_NEAR(m.jerk.value, 4 * pi * pi * 10 / std::pow(pi / 2, 3), 1e-9);
 }

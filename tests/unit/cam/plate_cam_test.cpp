@@ -1,6 +1,8 @@
 // Plate cam geometry and analyses against closed forms: a flat-faced follower on harmonic motion
 // is an eccentric circle; a hand-checked roller case; the contour's PolarFunction against the
 // parametric contour and finite differences; undercut detection; the minimum base radius.
+#include "designers/cam/plate_cam.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,21 +12,20 @@
 #include "designers/cam/base_radius.h"
 #include "designers/cam/cam_analysis.h"
 #include "designers/cam/contour_polar_function.h"
-#include "designers/cam/plate_cam.h"
 #include "src/error.h"
+#include "src/units.h"
 #include "tests/unit/cam/cam_test_support.h"
 
 namespace polarform {
 namespace {
 
 constexpr double pi = std::numbers::pi;
-constexpr double deg = pi / 180;
 
 SegmentSpec segment(SegmentKind kind, double from_deg, double to_deg, double lift, MotionLaw law) {
   SegmentSpec s;
   s.kind = kind;
-  s.start = from_deg * deg;
-  s.end = to_deg * deg;
+  s.start = from_deg * kRadiansPerDegree;
+  s.end = to_deg * kRadiansPerDegree;
   s.lift = lift;
   s.law = law;
   return s;
@@ -102,19 +103,20 @@ TEST(PlateCam, FlatFacedHarmonicCamIsAnEccentricCircle) {
 //   φ = atan((s' - e)/(y0 + s)) = atan(17.46479/59.3559) = 0.286163 rad = 16.396°.
 TEST(PlateCam, RollerPressureAngleAndCurvatureHandCheck) {
   const PlateCam radial(rdrd_program(), {FollowerKind::Roller, 0.0, 10.0}, 40.0);
-  EXPECT_NEAR(radial.pressure_angle(45 * deg), 0.4013735019791403, 1e-13);
-  EXPECT_NEAR(radial.pitch_radius_of_curvature(45 * deg), 56.548930778552865, 1e-10);
-  EXPECT_NEAR(radial.contour_radius_of_curvature(45 * deg), 46.548930778552865, 1e-10);
+  EXPECT_NEAR(radial.pressure_angle(45 * kRadiansPerDegree), 0.4013735019791403, 1e-13);
+  EXPECT_NEAR(radial.pitch_radius_of_curvature(45 * kRadiansPerDegree), 56.548930778552865, 1e-10);
+  EXPECT_NEAR(radial.contour_radius_of_curvature(45 * kRadiansPerDegree), 46.548930778552865,
+              1e-10);
   const PlateCam offset(rdrd_program(), {FollowerKind::Roller, 8.0, 10.0}, 40.0);
-  EXPECT_NEAR(offset.pressure_angle(45 * deg), 0.2861628924534735, 1e-13);
+  EXPECT_NEAR(offset.pressure_angle(45 * kRadiansPerDegree), 0.2861628924534735, 1e-13);
   // On a dwell the pitch curve is a circle through (e, y0 + s): radius sqrt(e² + (y0 + s)²) =
   // sqrt(64 + 69.35585²) = 69.81571 at the top dwell (s = 20), Rp = 50 at the bottom one; the
   // contour's radius is Rr less.
   const double top = std::hypot(8.0, std::sqrt(50.0 * 50.0 - 64.0) + 20.0);
   EXPECT_NEAR(top, 69.81571, 1e-5);
-  EXPECT_NEAR(offset.pitch_radius_of_curvature(135 * deg), top, 1e-10);
-  EXPECT_NEAR(offset.contour_radius_of_curvature(135 * deg), top - 10.0, 1e-10);
-  EXPECT_NEAR(offset.contour_radius_of_curvature(300 * deg), 40.0, 1e-10);
+  EXPECT_NEAR(offset.pitch_radius_of_curvature(135 * kRadiansPerDegree), top, 1e-10);
+  EXPECT_NEAR(offset.contour_radius_of_curvature(135 * kRadiansPerDegree), top - 10.0, 1e-10);
+  EXPECT_NEAR(offset.contour_radius_of_curvature(300 * kRadiansPerDegree), 40.0, 1e-10);
 }
 
 // The contour PolarFunction reproduces the parametric contour to 1e-12 and its derivatives agree
@@ -218,19 +220,21 @@ TEST(PlateCam, MinimumBaseRadiusMeetsThePressureAngleExactly) {
   const CamProgram program = rdrd_program();
   const Follower roller{FollowerKind::Roller, 0.0, 8.0};
   const BaseRadiusResult r =
-      minimum_base_radius(program, roller, Rotation::CounterClockwise, {30 * deg, 0.0}, uniform_angles(360));
-  EXPECT_NEAR(r.max_pressure_angle.value, 30 * deg, 1e-8);
+      minimum_base_radius(program, roller, Rotation::CounterClockwise,
+                          {30 * kRadiansPerDegree, 0.0}, uniform_angles(360));
+  EXPECT_NEAR(r.max_pressure_angle.value, 30 * kRadiansPerDegree, 1e-8);
   const double measured = test::dense_maximum([&](double t) {
     double s[2];
     program.derivatives(t, 1, s);
     return std::abs(std::atan(s[1] / (r.base_radius + 8.0 + s[0])));
   }, 0, 2 * pi).value;
-  EXPECT_NEAR(measured, 30 * deg, 1e-8);
+  EXPECT_NEAR(measured, 30 * kRadiansPerDegree, 1e-8);
   EXPECT_GT(r.min_contour_speed, 0.0);
 
   // Flat face on s = d(1 - cos θ): ρ = Rb + s + s'' = Rb + d, so ρ >= 20 needs Rb = 20 - d = 15.
-  const BaseRadiusResult flat = minimum_base_radius(eccentric_program(5.0), {FollowerKind::FlatFaced, 0.0, 0.0},
-                                                    Rotation::Clockwise, {30 * deg, 20.0}, uniform_angles(100));
+  const BaseRadiusResult flat =
+      minimum_base_radius(eccentric_program(5.0), {FollowerKind::FlatFaced, 0.0, 0.0},
+                          Rotation::Clockwise, {30 * kRadiansPerDegree, 20.0}, uniform_angles(100));
   EXPECT_NEAR(flat.base_radius, 15.0, 1e-7);
   EXPECT_NEAR(flat.min_convex_contour_radius.value, 20.0, 1e-7);
 }

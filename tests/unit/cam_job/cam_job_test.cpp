@@ -103,7 +103,7 @@ TEST(CamJob, FlatFacedAnalysesEqualTheClosedForms) {
   double radius = INFINITY;
   for (int k = 0; k < 360000; ++k) {
     double d[3];
-    r.program.derivatives(k * 1e-3 * kRad, 2, d);
+    r.program.derivatives(k * 1e-3 * kRadiansPerDegree, 2, d);
     radius = std::min(radius, 35 + d[0] + d[2]);  // flat face: ρ = Rb + s + s''
   }
   EXPECT_NEAR(r.analysis->min_convex_contour_radius.value, radius, 1e-7);

@@ -100,12 +100,13 @@ TEST(CamOutputs, ReportCarriesTheIssueFieldsWithTheJobsNumbers) {
     EXPECT_EQ(j["segments"][0]["start_deg"].get<double>(), 0.0);
     EXPECT_NEAR(j["segments"].back()["end_deg"].get<double>(), 360.0, 1e-12);
     for (std::size_t k = 0; k < d.segments.size(); ++k)
-      EXPECT_NEAR(j["segments"][k]["end_deg"].get<double>(), d.segments[k].end / kRad, 1e-9);
+      EXPECT_NEAR(j["segments"][k]["end_deg"].get<double>(), d.segments[k].end * kDegreesPerRadian,
+                  1e-9);
 
     if (r.plate) {
       EXPECT_EQ(j["cam"]["type"], "plate");
       EXPECT_EQ(j["max_pressure_angle_deg"].get<double>(),
-                r.analysis->max_pressure_angle.value / kRad);
+                r.analysis->max_pressure_angle.value * kDegreesPerRadian);
       EXPECT_EQ(j["min_radius_of_curvature_mm"].get<double>(),
                 r.analysis->min_convex_contour_radius.value);
       EXPECT_GT(j["min_radius_of_curvature_mm"].get<double>(), 0.0);
@@ -135,7 +136,7 @@ TEST(CamOutputs, ReportedAnalysesEqualClosedForms) {
   // cylindrical.xml: 30 mm cycloidal rise over 135°, pitch radius 60: tan α_max = (2h/β) / Rc.
   const json barrel = read_json(example("cylindrical").dir / "report.json");
   EXPECT_NEAR(barrel["max_pressure_angle_deg"].get<double>(),
-              std::atan(2 * 30 / (135 * kRad) / 60) / kRad, 1e-9);
+              std::atan(2 * 30 / (135 * kRadiansPerDegree) / 60) * kDegreesPerRadian, 1e-9);
 }
 
 // The largest level a design reaches: the running sum of its rises and returns.

@@ -6,10 +6,11 @@
 #include <cmath>
 #include <numbers>
 
+#include "src/units.h"
+
 namespace polarform::cam_job_test {
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kRad = kPi / 180;
 
 // s, ds/dθ, d²s/dθ² of roller.xml (mm, per rad) at cam angle θ in degrees, [0, 360): dwell to 90°,
 // cycloidal rise of 20 mm to 180°, dwell to 240°, 4-5-6-7 return to 360°.

@@ -81,7 +81,7 @@ TEST(StudyJob, DeviationCsvFollowsThePowerLaws) {
   EXPECT_NEAR(csv.rows.front()[0], 2, 1e-9);
   EXPECT_NEAR(csv.rows.back()[0], 180, 1e-9);
   for (const std::vector<double>& row : csv.rows) {
-    const double phi = row[0] * kRad / 2;                       // half arc angle
+    const double phi = row[0] * kRadiansPerDegree / 2;          // half arc angle
     EXPECT_LE(row[1], 3.6697e-2 * std::pow(phi, 3)) << row[0];  // RQB
     EXPECT_LE(row[2], 1.1338e-4 * std::pow(phi, 5)) << row[0];  // quartic, minimax α
     EXPECT_LE(row[2], row[3]) << row[0];                        // minimax beats printed α

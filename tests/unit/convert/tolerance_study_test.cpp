@@ -1,14 +1,16 @@
 // Conversion studies: log-spaced tolerances land exactly on the decades; every method's measured
 // error meets each tolerance; tightening the tolerance never lowers a control-point count; the
 // quasi-uniform quartic arc (minimax α) deviates less from the uniform angle than the RQB arc.
+#include "designers/convert/tolerance_study.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
 #include "designers/cam/contour_polar_function.h"
-#include "designers/convert/tolerance_study.h"
 #include "jobs/project/cam_project.h"
 #include "src/error.h"
+#include "src/units.h"
 
 namespace polarform {
 namespace {
@@ -62,7 +64,7 @@ TEST(ToleranceStudy, EveryMethodMeetsEveryTolerance) {
 TEST(AngleDeviationStudy, QuarticMinimaxBeatsRqbAtEveryAngle) {
   const std::vector<DeviationRow> rows = angle_deviation_study(12);
   ASSERT_EQ(rows.size(), 12u);
-  EXPECT_NEAR(rows.front().arc_angle, 2 * std::numbers::pi / 180, 1e-15);
+  EXPECT_NEAR(rows.front().arc_angle, 2 * kRadiansPerDegree, 1e-15);
   EXPECT_NEAR(rows.back().arc_angle, std::numbers::pi, 1e-13);
   for (const DeviationRow& r : rows) {
     EXPECT_LT(r.quartic_minimax, r.rqb);

@@ -11,9 +11,10 @@
 #include <set>
 #include <string>
 
-#include "src/error.h"
-#include "tests/unit/fit_job/job_test_support.h"
 #include "jobs/scan_cam/scan_cam_outputs.h"
+#include "src/error.h"
+#include "src/units.h"
+#include "tests/unit/fit_job/job_test_support.h"
 
 namespace polarform {
 namespace {
@@ -64,7 +65,7 @@ TEST(ScanCamJob, BundledThreeDimensionalPlateScanFindsItsFrame) {
   EXPECT_TRUE(s.profile.three_d);
   EXPECT_NEAR(std::abs(s.profile.thickness), 10.0, 0.005);
   const Eigen::Matrix3d truth =
-      Eigen::AngleAxisd(35.0 * std::numbers::pi / 180, Eigen::Vector3d(1, -2, 0.5).normalized())
+      Eigen::AngleAxisd(35.0 * kRadiansPerDegree, Eigen::Vector3d(1, -2, 0.5).normalized())
           .toRotationMatrix();
   EXPECT_LT((s.cam_frame.origin - Eigen::Vector3d(120, 40, -15)).norm(), 0.005);
   EXPECT_GT(s.cam_frame.axes.col(2).dot(truth.col(2)), std::cos(1e-4));  // axis within 0.1 mrad

@@ -12,6 +12,7 @@
 #include "export/csv_writer.h"
 #include "export/html_report.h"
 #include "export/svg_plot.h"
+#include "src/units.h"
 #include "tests/unit/plot/svg_test_support.h"
 
 namespace polarform {
@@ -19,7 +20,6 @@ namespace {
 
 namespace fs = std::filesystem;
 constexpr double kPi = std::numbers::pi;
-constexpr double kDeg = kPi / 180;
 
 struct Svaj {
   std::vector<double> theta, s, v, a, j;  // theta in degrees, derivatives per radian
@@ -28,7 +28,7 @@ struct Svaj {
 // Rise h over 0..120° (cycloidal), dwell, return over 180..300° (simple harmonic), dwell.
 // Each segment is sampled with both ends, so jumps at the boundaries are drawn vertically.
 Svaj cam_motion() {
-  const double h = 10, beta = 120 * kDeg;
+  const double h = 10, beta = 120 * kRadiansPerDegree;
   Svaj m;
   const auto add = [&](double theta, double s, double v, double a, double j) {
     m.theta.push_back(theta), m.s.push_back(s), m.v.push_back(v), m.a.push_back(a),
@@ -117,12 +117,12 @@ Figure profile(const Svaj& m) {
   p.equal_aspect = true;
   Series outline{"pitch curve", {}, {}}, base{"base circle", {}, {}, Series::Style::dashed};
   for (std::size_t i = 0; i < m.theta.size(); ++i) {
-    const double r = 40 + m.s[i], t = m.theta[i] * kDeg;
+    const double r = 40 + m.s[i], t = m.theta[i] * kRadiansPerDegree;
     outline.x.push_back(r * std::cos(t));
     outline.y.push_back(r * std::sin(t));
   }
   for (int i = 0; i <= 72; ++i) {
-    const double t = i * 5 * kDeg;
+    const double t = i * 5 * kRadiansPerDegree;
     base.x.push_back(40 * std::cos(t));
     base.y.push_back(40 * std::sin(t));
   }
@@ -135,7 +135,8 @@ Figure profile(const Svaj& m) {
   Series ends{"segment ends", {}, {}, Series::Style::markers};
   for (const double theta : {0.0, 120.0, 180.0, 300.0}) {
     const double r = theta > 100 && theta < 200 ? 50 : 40;
-    ends.x.push_back(r * std::cos(theta * kDeg)), ends.y.push_back(r * std::sin(theta * kDeg));
+    ends.x.push_back(r * std::cos(theta * kRadiansPerDegree)),
+        ends.y.push_back(r * std::sin(theta * kRadiansPerDegree));
   }
   p.add(std::move(outline));
   p.add(std::move(base));

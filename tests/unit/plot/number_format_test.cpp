@@ -1,12 +1,11 @@
 // Number text for the writers: fixed decimals, trimmed pixel numbers, shortest round trip.
-#include "export/number_format.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
 #include "export/xml_escape.h"
+#include "src/number_text.h"
 
 namespace polarform {
 namespace {

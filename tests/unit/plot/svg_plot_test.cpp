@@ -10,6 +10,7 @@
 
 #include "export/text_width.h"
 #include "src/error.h"
+#include "src/units.h"
 #include "tests/unit/plot/svg_test_support.h"
 
 namespace polarform {
@@ -291,8 +292,8 @@ TEST(SvgPlot, EqualAspectDrawsACircleRound) {
   plot.equal_aspect = true;
   Series circle{"profile", {}, {}};
   for (int i = 0; i <= 360; ++i) {
-    circle.x.push_back(30 + 20 * std::cos(i * std::numbers::pi / 180));
-    circle.y.push_back(-10 + 20 * std::sin(i * std::numbers::pi / 180));
+    circle.x.push_back(30 + 20 * std::cos(i * kRadiansPerDegree));
+    circle.y.push_back(-10 + 20 * std::sin(i * kRadiansPerDegree));
   }
   plot.add(std::move(circle));
   const ParsedSvg svg(figure.svg());

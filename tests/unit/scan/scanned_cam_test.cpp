@@ -1,6 +1,8 @@
 // The scanned-cam pipeline (designers/scan) on synthetic scans of designed cams with known
 // displacement: the follower motion, the base radius and the phase are recovered within stated
 // bounds from 2D profile scans and 3D plate scans, with and without a nominal design.
+#include "designers/scan/scanned_cam.h"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -11,16 +13,15 @@
 
 #include "designers/cam/cam_design.h"
 #include "designers/scan/nominal_comparison.h"
-#include "designers/scan/scanned_cam.h"
-#include "tests/support/synthetic_scans.h"
 #include "jobs/project/cam_project.h"
 #include "src/error.h"
+#include "src/units.h"
+#include "tests/support/synthetic_scans.h"
 
 namespace polarform {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kDeg = 180.0 / kPi;
 
 PlateCam example_cam(const std::string& name) {
   std::vector<std::string> warnings;
@@ -46,7 +47,7 @@ TEST(ScannedCam, RollerProfileScanWithNominalRecoversPhaseAndMotion) {
   const PlateCam cam = example_cam("roller.xml");
   CamScanSetup setup;
   setup.centre = Eigen::Vector2d(12.5, -7.25);
-  setup.phase = 30.0 / kDeg;
+  setup.phase = 30.0 / kDegreesPerRadian;
   setup.sigma = 0.005;
   const Eigen::Matrix3Xd points = cam_profile_scan(cam, setup);
   ScannedCamOptions o;
@@ -56,7 +57,7 @@ TEST(ScannedCam, RollerProfileScanWithNominalRecoversPhaseAndMotion) {
   const ScannedCam scan = analyse_scanned_cam(points, o);
   ASSERT_TRUE(scan.alignment);
   EXPECT_FALSE(scan.mirrored);
-  EXPECT_NEAR(scan.alignment->phase * kDeg, 30.0, 0.01);
+  EXPECT_NEAR(scan.alignment->phase * kDegreesPerRadian, 30.0, 0.01);
   EXPECT_NEAR(scan.cam_frame.origin.x(), 12.5, 2e-3);
   EXPECT_NEAR(scan.cam_frame.origin.y(), -7.25, 2e-3);
   // The noise floor is stated close to the σ put in.
@@ -70,14 +71,15 @@ TEST(ScannedCam, RollerProfileScanWithNominalRecoversPhaseAndMotion) {
   EXPECT_LT(c.normal_stats.rms, 0.002);
   EXPECT_LT(c.normal_stats.max, 0.006);
   EXPECT_NEAR(c.point_stats.rms, 0.005, 0.0006);  // the scanned points scatter by σ about nominal
-  RecordProperty("phase_error_deg", std::to_string(scan.alignment->phase * kDeg - 30.0));
+  RecordProperty("phase_error_deg",
+                 std::to_string(scan.alignment->phase * kDegreesPerRadian - 30.0));
   RecordProperty("max_s_error_mm", std::to_string(s_error));
 }
 
 TEST(ScannedCam, MirroredScanIsDetected) {
   const PlateCam cam = example_cam("offset_roller.xml");
   CamScanSetup setup;
-  setup.phase = 200.0 / kDeg;
+  setup.phase = 200.0 / kDegreesPerRadian;
   setup.sigma = 0.002;
   Eigen::Matrix3Xd points = cam_profile_scan(cam, setup);
   points.row(1) *= -1.0;  // seen from the other face
@@ -110,7 +112,7 @@ TEST(ScannedCam, FlatFacedProfileWithoutNominalRecoversMotionAndBaseRadius) {
 TEST(ScannedCam, ThreeDimensionalPlateScanFindsAxisFacesAndMotion) {
   const PlateCam cam = example_cam("roller.xml");
   CamScanSetup setup;
-  setup.phase = 75.0 / kDeg;
+  setup.phase = 75.0 / kDegreesPerRadian;
   setup.sigma = 0.004;
   setup.contour_points = 4000;
   RigidMotion placement;
@@ -130,10 +132,10 @@ TEST(ScannedCam, ThreeDimensionalPlateScanFindsAxisFacesAndMotion) {
   EXPECT_LT((scan.cam_frame.origin - placement.translation).norm(), 0.01);
   // The cam frame in scan coordinates is the placement of the design turned by the phase.
   const Eigen::Matrix3d truth =
-      placement.rotation * Eigen::AngleAxisd(75.0 / kDeg, Eigen::Vector3d::UnitZ());
+      placement.rotation * Eigen::AngleAxisd(75.0 / kDegreesPerRadian, Eigen::Vector3d::UnitZ());
   const double frame_angle = std::acos(std::min(1.0, scan.cam_frame.axes.col(0).dot(truth.col(0))));
-  EXPECT_LT(frame_angle * kDeg, 0.02);
-  RecordProperty("cam_frame_angle_error_deg", std::to_string(frame_angle * kDeg));
+  EXPECT_LT(frame_angle * kDegreesPerRadian, 0.02);
+  RecordProperty("cam_frame_angle_error_deg", std::to_string(frame_angle * kDegreesPerRadian));
   const double s_error = max_displacement_error(scan, cam);
   EXPECT_LT(s_error, 0.006);
   RecordProperty("max_s_error_mm", std::to_string(s_error));

@@ -10,17 +10,16 @@
 #include <vector>
 
 #include "src/error.h"
+#include "src/units.h"
 
 namespace polarform::studio {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
-
 SegmentSpec segment(SegmentKind kind, double start_deg, double end_deg, double lift) {
   SegmentSpec s;
   s.kind = kind;
-  s.start = start_deg * kDeg;
-  s.end = end_deg * kDeg;
+  s.start = start_deg * kRadiansPerDegree;
+  s.end = end_deg * kRadiansPerDegree;
   s.lift = lift;
   return s;
 }
@@ -62,20 +61,21 @@ void expect_refused(std::vector<SegmentSpec> segments, Edit edit, const char* wo
 
 TEST(SegmentEdits, MovingABoundaryKeepsTheTurnCovered) {
   auto s = program();
-  EXPECT_DOUBLE_EQ(set_boundary(s, 1, 100 * kDeg), 100 * kDeg);
-  EXPECT_EQ(s[0].end, 100 * kDeg);
-  EXPECT_EQ(s[1].start, 100 * kDeg);
+  EXPECT_DOUBLE_EQ(set_boundary(s, 1, 100 * kRadiansPerDegree), 100 * kRadiansPerDegree);
+  EXPECT_EQ(s[0].end, 100 * kRadiansPerDegree);
+  EXPECT_EQ(s[1].start, 100 * kRadiansPerDegree);
   EXPECT_EQ(s[0].start, 0.0);
-  EXPECT_EQ(s[1].end, 180 * kDeg);
+  EXPECT_EQ(s[1].end, 180 * kRadiansPerDegree);
   expect_covers_full_turn(s);
 }
 
 TEST(SegmentEdits, BoundaryIsClampedToLeaveTheMinimumWidth) {
   auto s = program();
-  EXPECT_DOUBLE_EQ(set_boundary(s, 2, 500 * kDeg), 300 * kDeg - kMinSegmentWidth);
+  EXPECT_DOUBLE_EQ(set_boundary(s, 2, 500 * kRadiansPerDegree),
+                   300 * kRadiansPerDegree - kMinSegmentWidth);
   EXPECT_NEAR(s[2].end - s[2].start, kMinSegmentWidth, 1e-15);
   expect_covers_full_turn(s);
-  EXPECT_DOUBLE_EQ(set_boundary(s, 2, -1.0), 120 * kDeg + kMinSegmentWidth);
+  EXPECT_DOUBLE_EQ(set_boundary(s, 2, -1.0), 120 * kRadiansPerDegree + kMinSegmentWidth);
   EXPECT_NEAR(s[1].end - s[1].start, kMinSegmentWidth, 1e-15);
   expect_covers_full_turn(s);
 }
@@ -90,19 +90,19 @@ TEST(SegmentEdits, AddDwellSplitsTheSegmentInHalves) {
   EXPECT_EQ(insert_dwell_after(s, 0), 1);
   ASSERT_EQ(s.size(), 5u);
   EXPECT_EQ(s[0].kind, SegmentKind::Rise);
-  EXPECT_DOUBLE_EQ(s[0].end, 60 * kDeg);
+  EXPECT_DOUBLE_EQ(s[0].end, 60 * kRadiansPerDegree);
   EXPECT_EQ(s[1].kind, SegmentKind::Dwell);
   EXPECT_EQ(s[1].lift, 0.0);
-  EXPECT_DOUBLE_EQ(s[1].end, 120 * kDeg);
+  EXPECT_DOUBLE_EQ(s[1].end, 120 * kRadiansPerDegree);
   expect_covers_full_turn(s);
   EXPECT_EQ(insert_dwell_after(s, 4), 5);  // after the last one too
-  EXPECT_DOUBLE_EQ(s[5].start, 330 * kDeg);
+  EXPECT_DOUBLE_EQ(s[5].start, 330 * kRadiansPerDegree);
   expect_covers_full_turn(s);
 }
 
 TEST(SegmentEdits, AddDwellRefusesASegmentTooNarrowToSplit) {
   auto s = program();
-  set_boundary(s, 2, 120 * kDeg);  // segment 2 shrinks to the minimum width
+  set_boundary(s, 2, 120 * kRadiansPerDegree);  // segment 2 shrinks to the minimum width
   expect_refused(s, [](auto& v) { insert_dwell_after(v, 1); }, "splitting it would leave parts");
   expect_refused(s, [](auto& v) { insert_dwell_after(v, 4); }, "no segment 5 (the cam has 4)");
   expect_refused(s, [](auto& v) { insert_dwell_after(v, -1); }, "no segment 0");
@@ -112,7 +112,7 @@ TEST(SegmentEdits, DeleteGivesTheSpanToTheNeighbour) {
   auto s = program();
   delete_segment(s, 1);  // the previous segment takes it
   ASSERT_EQ(s.size(), 3u);
-  EXPECT_EQ(s[0].end, 180 * kDeg);
+  EXPECT_EQ(s[0].end, 180 * kRadiansPerDegree);
   expect_covers_full_turn(s);
   delete_segment(s, 0);  // the first: the next takes it
   ASSERT_EQ(s.size(), 2u);
@@ -134,10 +134,10 @@ TEST(SegmentEdits, ReorderSwapsNeighboursEachKeepingItsWidth) {
   auto s = program();
   EXPECT_EQ(move_segment(s, 1, +1), 2);  // the 60° dwell after the 120° return
   EXPECT_EQ(s[1].kind, SegmentKind::Return);
-  EXPECT_DOUBLE_EQ(s[1].start, 120 * kDeg);
-  EXPECT_DOUBLE_EQ(s[1].end, 240 * kDeg);
+  EXPECT_DOUBLE_EQ(s[1].start, 120 * kRadiansPerDegree);
+  EXPECT_DOUBLE_EQ(s[1].end, 240 * kRadiansPerDegree);
   EXPECT_EQ(s[2].kind, SegmentKind::Dwell);
-  EXPECT_DOUBLE_EQ(s[2].end - s[2].start, 60 * kDeg);
+  EXPECT_DOUBLE_EQ(s[2].end - s[2].start, 60 * kRadiansPerDegree);
   expect_covers_full_turn(s);
   EXPECT_EQ(move_segment(s, 2, -1), 1);  // and back: the original program
   const auto original = program();
@@ -171,7 +171,7 @@ TEST(SegmentEdits, ManyRandomEditsKeepTheTurnCovered) {
         if (i + 1 < n) move_segment(s, i, +1);
         break;
       case 3:
-        if (n > 1) set_boundary(s, 1 + i % (n - 1), (step * 37 % 360) * kDeg);
+        if (n > 1) set_boundary(s, 1 + i % (n - 1), (step * 37 % 360) * kRadiansPerDegree);
         break;
     }
     expect_covers_full_turn(s);

@@ -1,8 +1,12 @@
-#include "export/number_format.h"
+#include "src/number_text.h"
 
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <locale>
+#include <sstream>
+
+#include "src/units.h"
 
 namespace polarform {
 
@@ -14,6 +18,16 @@ std::string non_finite(double v) {
 }
 
 }  // namespace
+
+std::string number_text(double value) {
+  std::ostringstream out;
+  out.imbue(std::locale::classic());
+  out.precision(6);
+  out << value;
+  return out.str();
+}
+
+std::string degrees_text(double radians) { return number_text(radians * kDegreesPerRadian) + "°"; }
 
 std::string format_round_trip(double v) {
   if (!std::isfinite(v)) return non_finite(v);
