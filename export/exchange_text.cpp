@@ -2,6 +2,8 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <ctime>
 
 #include "src/error.h"
@@ -22,8 +24,22 @@ std::string exchange_real(double x, char exponent_letter) {
   return mantissa + exponent_letter + text.substr(e + 1);
 }
 
+std::time_t stamp_time() {
+  const char* epoch = std::getenv("SOURCE_DATE_EPOCH");
+  if (!epoch) return std::time(nullptr);
+  long long seconds = 0;
+  const char* end = epoch + std::strlen(epoch);
+  const auto [ptr, ec] = std::from_chars(epoch, end, seconds);
+  if (ec != std::errc() || ptr != end || *epoch == '\0' || seconds < 0)
+    throw InputError(
+        "SOURCE_DATE_EPOCH: expected the seconds since 1970-01-01 UTC as a "
+        "non-negative integer, got \"" +
+        std::string(epoch) + "\"");
+  return static_cast<std::time_t>(seconds);
+}
+
 std::string utc_time_stamp(const char* strftime_format) {
-  const std::time_t now = std::time(nullptr);
+  const std::time_t now = stamp_time();
   std::tm utc{};
   gmtime_r(&now, &utc);
   char buf[64];

@@ -1,9 +1,10 @@
 // Text primitives shared by the exchange writers (IGES, STEP, DXF, X3D): reals written as the
 // shortest decimal that reads back to the identical double, always with a decimal point (IGES 5.3
 // and ISO 10303-21 both need one to tell a real from an integer), and UTC time
-// stamps for file headers.
+// stamps for file headers (reproducible with SOURCE_DATE_EPOCH).
 #pragma once
 
+#include <ctime>
 #include <string>
 
 namespace polarform {
@@ -13,7 +14,11 @@ namespace polarform {
 // a non-finite value.
 std::string exchange_real(double x, char exponent_letter = 'E');
 
-// The current UTC time formatted with std::strftime, e.g. "%Y%m%d.%H%M%S".
+// The moment exchange files are stamped with: now, or SOURCE_DATE_EPOCH when set (seconds since
+// 1970 UTC; the reproducible-builds.org convention), so that the same input gives the same bytes.
+// Throws InputError for a malformed SOURCE_DATE_EPOCH.
+std::time_t stamp_time();
+// stamp_time() in UTC formatted with std::strftime, e.g. "%Y%m%d.%H%M%S".
 std::string utc_time_stamp(const char* strftime_format);
 
 }  // namespace polarform

@@ -6,8 +6,8 @@
 #include <optional>
 #include <string_view>
 
+#include "export/figure.h"
 #include "export/nice_ticks.h"
-#include "export/svg_plot.h"
 
 namespace polarform {
 

@@ -3,8 +3,8 @@
 // over it). The data layers are drawn by export/plot_panel.
 #pragma once
 
+#include "export/figure.h"
 #include "export/plot_layout.h"
-#include "export/svg_plot.h"
 #include "export/svg_writer.h"
 
 namespace polarform {

@@ -50,7 +50,8 @@ std::string panel_name(const Plot& plot, std::size_t index) {
          (plot.title.empty() ? "" : " ('" + plot.title + "')");
 }
 
-// Data of the panel along x (or y): points plottable on both axes, lines, bands, annotations.
+// Data of the panel along x (or y): points plottable on both axes, lines, bands, annotations and
+// highlights.
 Extent data_extent(const Plot& plot, bool along_x, bool log_x, bool log_y) {
   Extent e;
   const bool log = along_x ? log_x : log_y;
@@ -66,6 +67,8 @@ Extent data_extent(const Plot& plot, bool along_x, bool log_x, bool log_y) {
         if (plottable(edge, log)) e.include(edge);
   for (const Annotation& a : plot.annotations())
     if (plottable(a.x, log_x) && plottable(a.y, log_y)) e.include(along_x ? a.x : a.y);
+  for (const Highlight& h : plot.highlights())
+    if (plottable(h.x, log_x) && plottable(h.y, log_y)) e.include(along_x ? h.x : h.y);
   return e;
 }
 

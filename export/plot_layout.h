@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "export/figure.h"
 #include "export/nice_ticks.h"
 #include "export/plot_axis.h"
 #include "export/polyline_path.h"
-#include "export/svg_plot.h"
 
 namespace polarform {
 

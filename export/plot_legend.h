@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "export/figure.h"
 #include "export/plot_marks.h"
 #include "export/polyline_path.h"
-#include "export/svg_plot.h"
 #include "export/svg_writer.h"
 
 namespace polarform {

@@ -209,6 +209,25 @@ void draw_annotations(SvgWriter& svg, const Plot& plot, const PanelFrame& f) {
   }
 }
 
+// Highlighted points: a ring in the highlight's colour with the explanation as its tooltip.
+void draw_highlights(SvgWriter& svg, const Plot& plot, const PanelFrame& f) {
+  for (const Highlight& h : plot.highlights()) {
+    const PixelPoint p{f.x(h.x), f.y(h.y)};
+    if (!f.area.contains(p)) continue;
+    svg.begin("circle")
+        .attr("class", "highlight")
+        .attr("cx", p.x)
+        .attr("cy", p.y)
+        .attr("r", style::highlight_radius)
+        .attr("fill", "none")
+        .attr("stroke", or_default(h.color, style::highlight_color))
+        .attr("stroke-width", style::reference_width * 1.5)
+        .open();
+    svg.begin("title").text(h.text);
+    svg.close();
+  }
+}
+
 LegendEntry::Kind legend_kind(Series::Style s) {
   switch (s) {
     case Series::Style::line:
@@ -251,6 +270,7 @@ void draw_panel(SvgWriter& svg, const Plot& plot, const PanelFrame& frame) {
   draw_reference_lines(svg, plot, frame);
   draw_series(svg, drawn, frame.area);
   draw_frame(svg, plot, frame);
+  draw_highlights(svg, plot, frame);
   draw_annotations(svg, plot, frame);
   const bool no_data =
       std::all_of(drawn.begin(), drawn.end(), [](const DrawnSeries& d) { return d.runs.empty(); });

@@ -3,8 +3,8 @@
 // tick labels, axis labels and title, annotations and the legend.
 #pragma once
 
+#include "export/figure.h"
 #include "export/plot_layout.h"
-#include "export/svg_plot.h"
 #include "export/svg_writer.h"
 
 namespace polarform {

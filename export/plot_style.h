@@ -22,6 +22,7 @@ inline constexpr double line_width = 1.75;
 inline constexpr double reference_width = 1.1;
 inline constexpr double marker_radius = 3.5;
 inline constexpr double band_opacity = 0.18;
+inline constexpr double highlight_radius = 6;
 inline constexpr double halo_width = 3;  // white outline that keeps notes legible over data
 inline constexpr std::string_view dash = "6 4";
 inline constexpr std::string_view reference_dash = "4 3";
@@ -33,6 +34,7 @@ inline constexpr std::string_view minor_grid_color = "#f1f1f1";
 inline constexpr std::string_view muted_text_color = "#888888";
 inline constexpr std::string_view reference_color = "#666666";
 inline constexpr std::string_view band_color = "#999999";
+inline constexpr std::string_view highlight_color = "#D55E00";  // discontinuities, violations
 
 // Okabe & Ito 2008, without the yellow that is unreadable on white.
 inline constexpr std::array<std::string_view, 7> palette = {

@@ -1,114 +1,43 @@
 #include "export/svg_plot.h"
 
-#include <algorithm>
-#include <cctype>
-#include <cmath>
-
 #include "export/atomic_file.h"
 #include "export/plot_layout.h"
 #include "export/plot_panel.h"
 #include "export/plot_style.h"
 #include "export/svg_writer.h"
-#include "src/error.h"
-#include "src/number_text.h"
 
 namespace polarform {
 
-namespace {
-
-// Empty (palette), "#rgb", "#rrggbb" or a CSS colour name.
-void check_color(const std::string& color, const std::string& what) {
-  const auto hex = [](char c) { return std::isxdigit(static_cast<unsigned char>(c)) != 0; };
-  const auto letter = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; };
-  const bool ok = color.empty() ||
-                  (color[0] == '#' && (color.size() == 4 || color.size() == 7) &&
-                   std::all_of(color.begin() + 1, color.end(), hex)) ||
-                  std::all_of(color.begin(), color.end(), letter);
-  if (!ok)
-    throw InputError(what + ": color must be \"#rrggbb\", \"#rgb\" or a CSS colour name, got \"" +
-                     color + "\"");
-}
-
-void check_finite(double v, const std::string& what) {
-  if (!std::isfinite(v)) throw InputError(what + " must be finite, got " + format_round_trip(v));
-}
-
-}  // namespace
-
-void Plot::add(Series series) {
-  const std::string what = "Series '" + series.label + "'";
-  if (series.x.size() != series.y.size())
-    throw InputError(what + ": x has " + std::to_string(series.x.size()) + " values but y has " +
-                     std::to_string(series.y.size()) + "; they must pair up");
-  check_color(series.color, what);
-  series_.push_back(std::move(series));
-}
-
-void Plot::add_vertical_line(double x, std::string label, std::string color) {
-  check_finite(x, "add_vertical_line: x");
-  check_color(color, "add_vertical_line");
-  vertical_lines_.push_back({x, std::move(label), std::move(color)});
-}
-
-void Plot::add_horizontal_line(double y, std::string label, std::string color) {
-  check_finite(y, "add_horizontal_line: y");
-  check_color(color, "add_horizontal_line");
-  horizontal_lines_.push_back({y, std::move(label), std::move(color)});
-}
-
-void Plot::add_band(double x0, double x1, std::string label, std::string color) {
-  check_finite(x0, "add_band: x0");
-  check_finite(x1, "add_band: x1");
-  if (!(x0 < x1))
-    throw InputError("add_band: x0 must be less than x1, got " + format_round_trip(x0) + " and " +
-                     format_round_trip(x1));
-  check_color(color, "add_band");
-  bands_.push_back({x0, x1, std::move(label), std::move(color)});
-}
-
-void Plot::add_annotation(double x, double y, std::string text) {
-  check_finite(x, "add_annotation: x");
-  check_finite(y, "add_annotation: y");
-  if (text.empty()) throw InputError("add_annotation: text must not be empty");
-  annotations_.push_back({x, y, std::move(text)});
-}
-
-Figure::Figure(double width, double height) : width_(width), height_(height) {
-  if (!(std::isfinite(width) && width >= 200))
-    throw InputError("Figure: width must be at least 200 px, got " + format_round_trip(width));
-  if (!(std::isfinite(height) && height >= 150))
-    throw InputError("Figure: height must be at least 150 px, got " + format_round_trip(height));
-}
-
-Plot& Figure::add_panel() { return panels_.emplace_back(); }
-
-std::string Figure::svg() const {
-  const std::vector<PanelFrame> frames = lay_out_figure(*this);
+std::string svg_document(const Figure& figure) {
+  const std::vector<PanelFrame> frames = lay_out_figure(figure);
+  const double width = figure.width(), height = figure.height();
   SvgWriter svg;
-  const std::string size = svg_number(width_) + " " + svg_number(height_);
+  const std::string size = svg_number(width) + " " + svg_number(height);
   svg.begin("svg")
       .attr("xmlns", "http://www.w3.org/2000/svg")
-      .attr("width", width_)
-      .attr("height", height_)
+      .attr("width", width)
+      .attr("height", height)
       .attr("viewBox", "0 0 " + size)
       .attr("font-family", plot_style::font_family)
       .open();
-  svg.begin("rect").attr("width", width_).attr("height", height_).attr("fill", "white").empty();
-  if (!title.empty())
+  svg.begin("rect").attr("width", width).attr("height", height).attr("fill", "white").empty();
+  if (!figure.title.empty())
     svg.begin("text")
         .attr("class", "figure-title")
-        .attr("x", width_ / 2)
+        .attr("x", width / 2)
         .attr("y", kFigurePadding + plot_style::figure_title_font)
         .attr("text-anchor", "middle")
         .attr("font-size", plot_style::figure_title_font)
         .attr("font-weight", "600")
         .attr("fill", plot_style::text_color)
-        .text(title);
-  for (std::size_t i = 0; i < frames.size(); ++i) draw_panel(svg, panels_[i], frames[i]);
+        .text(figure.title);
+  for (std::size_t i = 0; i < frames.size(); ++i) draw_panel(svg, figure.panels()[i], frames[i]);
   svg.close();
   return svg.str();
 }
 
-void Figure::save(const std::filesystem::path& path) const { write_file_atomically(path, svg()); }
+void save_svg(const Figure& figure, const std::filesystem::path& path) {
+  write_file_atomically(path, svg_document(figure));
+}
 
 }  // namespace polarform

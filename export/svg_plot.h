@@ -1,101 +1,20 @@
-// Report-quality 2-D plots as SVG. A Figure is a vertical stack of Plot panels (optionally sharing
-// the x axis, as in SVAJ diagrams); a Plot holds line/marker series, reference lines, highlighted
-// bands and annotations, on linear or log axes with nice ticks, a light grid and a legend.
-// Output is self-contained, deterministic (same input, same bytes) and embeds in report.html.
+// Figures (export/figure.h) as report-quality SVG: panels with nice ticks on linear or log axes,
+// a light grid, series, reference lines, bands, highlighted points (with their explanation as a
+// tooltip) and annotations, and a legend. The output is self-contained, deterministic (same
+// figure, same bytes) and embeds in report.html.
 #pragma once
 
-#include <deque>
 #include <filesystem>
-#include <optional>
 #include <string>
-#include <vector>
+
+#include "export/figure.h"
 
 namespace polarform {
 
-struct AxisRange {
-  double min = 0;
-  double max = 1;
-};
-
-struct Series {
-  enum class Style { line, markers, line_markers, dashed };
-  std::string label;         // legend text; empty keeps the series out of the legend
-  std::vector<double> x, y;  // equal lengths; NaN or inf, or <= 0 on a log axis, leaves a gap
-  Style style = Style::line;
-  std::string color{};  // "#rrggbb", "#rgb" or a CSS colour name; empty: next palette colour
-};
-
-struct ReferenceLine {
-  double value;
-  std::string label;  // drawn beside the line
-  std::string color;  // empty: grey
-};
-
-struct Band {
-  double x0, x1;
-  std::string label;  // legend text; empty keeps the band out of the legend
-  std::string color;  // empty: grey; drawn translucent
-};
-
-struct Annotation {
-  double x, y;
-  std::string text;
-};
-
-class Plot {
- public:
-  std::string title;
-  std::string x_label, y_label;  // with units: "cam angle θ [deg]", "s [mm]"
-  bool log_x = false, log_y = false;
-  bool equal_aspect = false;  // widens one range so a unit has the same length on both axes
-  std::optional<AxisRange> x_range, y_range;       // default: x fits the data, y adds 5 % margins
-  std::optional<double> x_tick_step, y_tick_step;  // default: 1-2-5 steps, decades on log axes
-
-  // Each add validates its input and throws InputError naming the field.
-  void add(Series series);
-  void add_vertical_line(double x, std::string label = {}, std::string color = {});
-  void add_horizontal_line(double y, std::string label = {}, std::string color = {});
-  void add_band(double x0, double x1, std::string label = {}, std::string color = {});
-  void add_annotation(double x, double y, std::string text);
-
-  const std::vector<Series>& series() const { return series_; }
-  const std::vector<ReferenceLine>& vertical_lines() const { return vertical_lines_; }
-  const std::vector<ReferenceLine>& horizontal_lines() const { return horizontal_lines_; }
-  const std::vector<Band>& bands() const { return bands_; }
-  const std::vector<Annotation>& annotations() const { return annotations_; }
-
- private:
-  std::vector<Series> series_;
-  std::vector<ReferenceLine> vertical_lines_, horizontal_lines_;
-  std::vector<Band> bands_;
-  std::vector<Annotation> annotations_;
-};
-
-class Figure {
- public:
-  // Size of the drawing in pixels, at least 200 x 150.
-  explicit Figure(double width = 800, double height = 500);
-
-  std::string title;
-  // Panels share the x axis of the first panel (x_label, log_x, x_range, x_tick_step; the range
-  // covers all panels' data); tick labels and the x label appear under the last panel only.
-  bool shared_x = false;
-
-  // A new panel below the existing ones; the reference stays valid as panels are added.
-  Plot& add_panel();
-  const std::deque<Plot>& panels() const { return panels_; }
-  double width() const { return width_; }
-  double height() const { return height_; }
-
-  // The SVG document. Throws InputError for settings that cannot be drawn (no panels, an empty
-  // or non-positive log range, panels that do not fit the height).
-  std::string svg() const;
-  // Writes svg() to path atomically.
-  void save(const std::filesystem::path& path) const;
-
- private:
-  double width_, height_;
-  std::deque<Plot> panels_;
-};
+// The SVG document. Throws InputError for settings that cannot be drawn (no panels, an empty or
+// non-positive log range, panels that do not fit the height).
+std::string svg_document(const Figure& figure);
+// Writes svg_document(figure) to path atomically.
+void save_svg(const Figure& figure, const std::filesystem::path& path);
 
 }  // namespace polarform

@@ -26,6 +26,12 @@ inline double degrees_in_turn(double radians) {
   return d < 0 ? d + 360.0 : d;
 }
 
+// The same in radians, within [0, 2π).
+inline double radians_in_turn(double radians) {
+  const double r = std::fmod(radians, 2 * std::numbers::pi);
+  return r < 0 ? r + 2 * std::numbers::pi : r;
+}
+
 // The cam's angular speed ω [rad/s] at `rpm` revolutions per minute.
 constexpr double angular_speed(double rpm) { return 2 * std::numbers::pi * rpm / 60; }
 

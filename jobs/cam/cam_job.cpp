@@ -2,16 +2,28 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <numbers>
 
+#include "designers/cam/cam_frame.h"
 #include "designers/cam/contour_polar_function.h"
+#include "designers/convert/conversion_error.h"
 #include "src/error.h"
 #include "src/number_text.h"
 #include "src/nurbs/symbolic_product.h"
+#include "src/units.h"
 
 namespace polarform {
 
 namespace {
+
+using Clock = std::chrono::steady_clock;
+
+void check_tolerance(const CamProject& project) {
+  if (!(project.conversion.tolerance >= kMinTolerance))
+    throw InputError("conversion tolerance " + format_round_trip(project.conversion.tolerance) +
+                     " mm: expected >= " + format_round_trip(kMinTolerance) + " mm");
+}
 
 // The track centre line (Rc·X, Rc·Y, z): the base circle's homogeneous rows times the factors
 // (Rc, F − offset, 1), with F the converted track height (Bae 2002, eq. (B.3) in curve form).
@@ -41,6 +53,122 @@ PolarFunction offset_track_height(const BarrelCam& barrel, double offset) {
   return f;
 }
 
+// Angles over [a, b] (ends included) at about `per_revolution` samples per 2π, at least 8.
+std::vector<double> segment_angles(double a, double b, int per_revolution) {
+  const int n =
+      std::max(8, static_cast<int>(std::ceil((b - a) / (2 * std::numbers::pi) * per_revolution)));
+  std::vector<double> t(n + 1);
+  for (int i = 0; i <= n; ++i) t[i] = a + (b - a) * i / n;
+  t[n] = b;
+  return t;
+}
+
+// The motion and contour curves of a plate cam, one-sided at the segment boundaries.
+void sample_plate(const PlateCam& cam, int per_revolution, MotionCurves& m, PlateCurves& p) {
+  const auto& segments = cam.program().segments();
+  for (int k = 0; k < static_cast<int>(segments.size()); ++k)
+    for (double t : segment_angles(segments[k].start(), segments[k].end(), per_revolution)) {
+      const CamSample c = cam.sample_in_segment(k, t);
+      m.theta.push_back(t);
+      m.s.push_back(c.s);
+      m.v.push_back(c.v);
+      m.a.push_back(c.a);
+      m.j.push_back(c.j);
+      m.pressure_angle.push_back(c.pressure_angle);
+      Eigen::Vector2d contour[2], pitch[1];
+      cam.contour_in_segment(k, t, 1, contour);
+      cam.pitch(t, 0, pitch);
+      // A contour single-valued about the centre has its outward normal on the side of the radius.
+      Eigen::Vector2d n(-contour[1].y(), contour[1].x());
+      if (n.dot(contour[0]) < 0) n = -n;
+      p.contour.push_back(contour[0]);
+      p.pitch.push_back(pitch[0]);
+      p.normal.push_back(n.norm() > 0 ? n.normalized() : contour[0].normalized());
+      p.curvature.push_back(c.contour_curvature);
+    }
+}
+
+// The motion of a cylindrical cam, one-sided at the segment boundaries.
+void sample_barrel(const BarrelCam& cam, int per_revolution, MotionCurves& m) {
+  for (const MotionSegment& seg : cam.program().segments())
+    for (double t : segment_angles(seg.start(), seg.end(), per_revolution)) {
+      double d[4];
+      seg.derivatives(t, 3, d);
+      m.theta.push_back(t);
+      m.s.push_back(d[0]);
+      m.v.push_back(d[1]);
+      m.a.push_back(d[2]);
+      m.j.push_back(d[3]);
+      m.pressure_angle.push_back(cam.pressure_angle(t, cam.pitch_radius()));
+    }
+}
+
+// The groove walls at the pitch radius developed onto the pitch cylinder: a wall point's polar
+// angle becomes the cam angle it faces, unwrapped next to the sample's θ.
+std::array<std::vector<Eigen::Vector2d>, 2> developed_walls(const BarrelCam& cam,
+                                                            const std::vector<double>& theta) {
+  std::array<std::vector<Eigen::Vector2d>, 2> walls;
+  const double rc = cam.pitch_radius(), turn = 2 * std::numbers::pi;
+  for (int k = 0; k < 2; ++k)
+    for (double t : theta) {
+      const Eigen::Vector3d w = cam.groove_wall_point(t, rc, k == 0 ? -1 : 1);
+      const double faced = cam_angle(std::atan2(w.y(), w.x()), cam.rotation());
+      walls[k].emplace_back(rc * (faced + turn * std::round((t - faced) / turn)), w.z());
+    }
+  return walls;
+}
+
+// The measured radial error at `count` + 1 equal parameter steps, sorted by polar angle.
+ErrorCurve measure_error(const PolarConversion& c, const PolarFunction& f, int count) {
+  const NurbsCurve2d& curve = c.curve;
+  std::vector<std::pair<double, double>> samples;
+  samples.reserve(static_cast<std::size_t>(count) + 1);
+  for (int k = 0; k <= count; ++k) {
+    const double u = curve.front() + (curve.back() - curve.front()) * k / count;
+    double psi = 0.0;
+    const double e = radial_error_at(curve, f, u, c.base.angle(u), &psi);
+    samples.emplace_back(radians_in_turn(psi), e);
+  }
+  std::sort(samples.begin(), samples.end());
+  ErrorCurve out;
+  for (const auto& [angle, error] : samples) {
+    out.angle.push_back(angle);
+    out.error.push_back(error);
+  }
+  return out;
+}
+
+PlateProfile plate_profile(const CamProject& project, const CamConversionStage& stage,
+                           const CamJobOptions& options, std::vector<std::string>& warnings) {
+  PlateProfile p{stage.conversion.curve, std::nullopt, std::nullopt};
+  // The degree-limited profile is an extra: when its degree cannot reach the tolerance the exact
+  // profile still stands, so the job says so instead of failing.
+  if (options.with_limited) try {
+      p.limited = approximate_polar_curve(stage.profile_function, options.limited_degree,
+                                          project.conversion.tolerance);
+    } catch (const NumericalError& e) {
+      warnings.push_back("degree-" + std::to_string(options.limited_degree) +
+                         " profile not written: " + e.what());
+    }
+  if (project.max_degree && p.curve.degree() > *project.max_degree)
+    p.capped = approximate_polar_curve(stage.profile_function, *project.max_degree,
+                                       project.conversion.tolerance);
+  return p;
+}
+
+CylindricalTrack cylindrical_track(const CamProject& project, const BarrelCam& barrel,
+                                   const CamConversionStage& stage, double offset) {
+  const CamDesign& d = project.cam;
+  CylindricalTrack t{track_curve(stage.conversion, d.cylinder_radius, offset), offset, {}};
+  if (d.groove_depth > 0) {
+    const GrooveOptions groove{d.cylinder_radius - d.groove_depth / 2,
+                               d.cylinder_radius + d.groove_depth / 2, project.conversion.tolerance,
+                               project.conversion.alpha};
+    for (int side : {-1, 1}) t.groove.push_back(groove_surface(barrel, side, groove));
+  }
+  return t;
+}
+
 }  // namespace
 
 double track_height_offset(const CamDesign& design) {
@@ -53,52 +181,90 @@ PolarFunction cam_profile_function(const CamDesign& design) {
   return offset_track_height(make_barrel_cam(design), track_height_offset(design));
 }
 
-CamJobResult run_cam_job(const CamProject& project, const CamJobOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
-  if (!(project.conversion.tolerance >= kMinTolerance))
-    throw InputError("conversion tolerance " + format_round_trip(project.conversion.tolerance) +
-                     " mm: expected >= " + format_round_trip(kMinTolerance) + " mm");
-  const CamDesign& design = project.cam;
-  CamJobResult r(project, make_program(design));
-  r.continuity = check_continuity(r.program, 2);
-  r.angles = uniform_angles(options.analysis_angles);
-  for (double theta : r.angles) r.kinematics.push_back(r.program.kinematics(theta, design.rpm));
+CamDesignStage design_cam(const CamProject& project) {
+  const CamDesign& d = project.cam;
+  CamProgram program = make_program(d);
+  std::vector<ContinuityIssue> continuity = check_continuity(program, 3);
+  if (d.type == CamType::Plate)
+    return {project, std::move(program), std::move(continuity), make_plate_cam(d)};
+  return {project, std::move(program), std::move(continuity), make_barrel_cam(d)};
+}
 
-  if (design.type == CamType::Plate) {
-    r.plate = make_plate_cam(design);
-    r.analysis = analyse(*r.plate, r.angles);
-    r.profile_function = cam_polar_function(*r.plate);
-    r.conversion = convert_polar_function(r.profile_function, project.conversion);
-    r.profile = r.conversion.curve;
-    // The degree-limited profile is an extra: when its degree cannot reach the tolerance the
-    // exact profile still stands, so the job says so instead of failing.
-    if (options.with_limited) try {
-        r.limited = approximate_polar_curve(r.profile_function, options.limited_degree,
-                                            project.conversion.tolerance);
-      } catch (const NumericalError& e) {
-        r.warnings.push_back("degree-" + std::to_string(options.limited_degree) +
-                             " profile not written: " + e.what());
-      }
-    if (project.max_degree && r.profile.degree() > *project.max_degree)
-      r.capped = approximate_polar_curve(r.profile_function, *project.max_degree,
-                                         project.conversion.tolerance);
+Extremum CamAnalysisStage::max_pressure_angle() const {
+  if (const auto* p = std::get_if<PlateCamAnalysis>(&cam)) return p->analysis.max_pressure_angle;
+  const auto& c = std::get<CylindricalCamAnalysis>(cam);
+  Extremum worst;
+  for (std::size_t i = 0; i < c.pressure_angle.size(); ++i)
+    if (std::abs(c.pressure_angle[i]) > worst.value)
+      worst = {std::abs(c.pressure_angle[i]), angles[i]};
+  return worst;
+}
+
+const MotionExtrema& CamAnalysisStage::motion_extrema() const {
+  if (const auto* p = std::get_if<PlateCamAnalysis>(&cam)) return p->analysis.motion;
+  return std::get<CylindricalCamAnalysis>(cam).motion;
+}
+
+CamAnalysisStage analyse_cam(const CamDesignStage& design, const CamJobOptions& options) {
+  CamAnalysisStage a;
+  a.angles = uniform_angles(options.analysis_angles);
+  for (double theta : a.angles)
+    a.kinematics.push_back(design.program.kinematics(theta, design.project.cam.rpm));
+  if (const auto* plate = std::get_if<PlateCam>(&design.cam)) {
+    PlateCamAnalysis p{analyse(*plate, a.angles), {}};
+    sample_plate(*plate, options.curve_samples, a.curves, p.curves);
+    a.cam = std::move(p);
   } else {
-    r.barrel = make_barrel_cam(design);
-    for (double theta : r.angles)
-      r.barrel_pressure_angle.push_back(r.barrel->pressure_angle(theta, design.cylinder_radius));
-    r.track_offset = track_height_offset(design);
-    r.profile_function = offset_track_height(*r.barrel, r.track_offset);
-    r.conversion = convert_polar_function(r.profile_function, project.conversion);
-    r.track = track_curve(r.conversion, design.cylinder_radius, r.track_offset);
-    if (design.groove_depth > 0) {
-      const GrooveOptions groove{design.cylinder_radius - design.groove_depth / 2,
-                                 design.cylinder_radius + design.groove_depth / 2,
-                                 project.conversion.tolerance, project.conversion.alpha};
-      for (int side : {-1, 1}) r.groove.push_back(groove_surface(*r.barrel, side, groove));
-    }
+    const auto& barrel = std::get<BarrelCam>(design.cam);
+    CylindricalCamAnalysis c{motion_extrema(design.program, a.angles), {}, {}};
+    for (double theta : a.angles)
+      c.pressure_angle.push_back(barrel.pressure_angle(theta, barrel.pitch_radius()));
+    sample_barrel(barrel, options.curve_samples, a.curves);
+    c.developed_walls = developed_walls(barrel, a.curves.theta);
+    a.cam = std::move(c);
   }
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return r;
+  return a;
+}
+
+int CamConversionStage::degree() const {
+  return std::visit([](const auto& p) { return p.curve.degree(); }, profile);
+}
+
+int CamConversionStage::control_points() const {
+  return std::visit([](const auto& p) { return p.curve.size(); }, profile);
+}
+
+std::size_t CamConversionStage::knot_count() const {
+  return std::visit([](const auto& p) { return p.curve.knots().size(); }, profile);
+}
+
+CamConversionStage convert_cam(const CamDesignStage& design, const CamJobOptions& options) {
+  const CamProject& project = design.project;
+  check_tolerance(project);
+  CamConversionStage c;
+  if (const auto* plate = std::get_if<PlateCam>(&design.cam)) {
+    c.profile_function = cam_polar_function(*plate);
+    c.conversion = convert_polar_function(c.profile_function, project.conversion);
+    c.profile = plate_profile(project, c, options, c.warnings);
+  } else {
+    const auto& barrel = std::get<BarrelCam>(design.cam);
+    const double offset = track_height_offset(project.cam);
+    c.profile_function = offset_track_height(barrel, offset);
+    c.conversion = convert_polar_function(c.profile_function, project.conversion);
+    c.profile = cylindrical_track(project, barrel, c, offset);
+  }
+  c.error = measure_error(c.conversion, c.profile_function, options.error_samples);
+  return c;
+}
+
+CamJobResult run_cam_job(const CamProject& project, const CamJobOptions& options) {
+  const auto start = Clock::now();
+  check_tolerance(project);  // before the work of the first stages
+  CamDesignStage design = design_cam(project);
+  CamAnalysisStage analysis = analyse_cam(design, options);
+  CamConversionStage conversion = convert_cam(design, options);
+  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return {std::move(design), std::move(analysis), std::move(conversion), seconds};
 }
 
 }  // namespace polarform

@@ -1,13 +1,23 @@
-// The cam job: everything `polarform cam` and the studio compute for a cam project — the motion
-// program and its continuity diagnostics, the cam geometry and analyses, the exact NURBS profile
-// (plate cam contour, or cylindrical cam track centre line) with its measured error, and the
-// degree-limited profile for consumers that cap the degree. Computing writes nothing.
+// The cam job: everything `polarform cam` and the studio compute for a cam project, as a staged
+// pipeline whose stages the studio runs one by one while the design is edited:
+//   design   the motion program, its continuity up to jerk, the plate or cylindrical cam;
+//   analyse  SVAJ on the analysis grid (time units at the cam's speed), motion curves sampled
+//            segment by segment, and the plate cam's analyses (pressure angle, radii of
+//            curvature, undercut) or the cylindrical cam's pressure angle at the pitch radius;
+//   convert  the exact NURBS profile (plate contour or cylindrical track centre line) within the
+//            tolerance, its measured radial error along the profile, the degree-limited and the
+//            degree-capped profiles, the groove walls.
+// The result value is what the studio shows and what the output bundle (cam_outputs.h) writes.
+// Computing writes nothing.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
+#include "designers/cam/barrel_cam.h"
 #include "designers/cam/cam_analysis.h"
 #include "designers/cam/continuity.h"
 #include "designers/cam/groove_surface.h"
@@ -18,37 +28,120 @@
 namespace polarform {
 
 struct CamJobOptions {
-  int analysis_angles = 720;  // grid of the analyses and plots over one revolution
+  int analysis_angles = 720;  // grid of the analyses and of svaj.csv over one revolution
+  int curve_samples = 720;    // samples per revolution of the motion and profile curves
+  int error_samples = 4000;   // samples of the measured radial error along the profile
   int limited_degree = 3;     // degree of the degree-limited profile (profile_deg3.dxf)
   bool with_limited = true;   // compute the degree-limited profile
 };
 
-struct CamJobResult {
-  CamJobResult(CamProject p, CamProgram prog) : project(std::move(p)), program(std::move(prog)) {}
+// ---- Stage 1: design -----------------------------------------------------------------------
 
+struct CamDesignStage {
   CamProject project;
   CamProgram program;
-  std::vector<ContinuityIssue> continuity;
-  std::vector<double> angles;                  // the analysis grid, rad
-  std::vector<Kinematics> kinematics;          // at each grid angle, time units from rpm
-  std::optional<PlateCam> plate;               // plate cams
-  std::optional<CamAnalysis> analysis;         // plate cams
-  std::optional<BarrelCam> barrel;             // cylindrical cams
-  std::vector<double> barrel_pressure_angle;   // cylindrical cams: at the pitch radius, rad
+  std::vector<ContinuityIssue> continuity;  // displacement up to jerk, at segment boundaries
+  std::variant<PlateCam, BarrelCam> cam;
+};
+
+// Throws InputError (bad design) naming the cause.
+CamDesignStage design_cam(const CamProject& project);
+
+// ---- Stage 2: analyse ----------------------------------------------------------------------
+
+// The motion sampled segment by segment, both ends of each segment included, so that a jump at
+// a boundary shows as a jump: the curves of the SVAJ plots.
+struct MotionCurves {
+  std::vector<double> theta;           // cam angle, rad, non-decreasing
+  std::vector<double> s, v, a, j;      // mm, mm/rad, mm/rad², mm/rad³
+  std::vector<double> pressure_angle;  // rad (cylindrical cams: at the pitch radius)
+};
+
+// A plate cam's curves at the MotionCurves' angles, in the cam frame.
+struct PlateCurves {
+  std::vector<Eigen::Vector2d> pitch, contour;
+  std::vector<Eigen::Vector2d> normal;  // unit, pointing out of the cam
+  std::vector<double> curvature;        // signed contour curvature, 1/mm (> 0 convex)
+};
+
+struct PlateCamAnalysis {
+  CamAnalysis analysis;  // extremes, and one CamSample per grid angle
+  PlateCurves curves;
+};
+
+struct CylindricalCamAnalysis {
+  MotionExtrema motion;                // largest |s'|, |s''|, |s'''| and where
+  std::vector<double> pressure_angle;  // at the pitch radius, at each grid angle, rad
+  // The groove walls (−z side, +z side) where they cut the pitch cylinder, developed onto it:
+  // (x = Rc·φ, z) in mm, from the exact roller envelope at the MotionCurves' angles.
+  std::array<std::vector<Eigen::Vector2d>, 2> developed_walls;
+};
+
+struct CamAnalysisStage {
+  std::vector<double> angles;          // the analysis grid, rad
+  std::vector<Kinematics> kinematics;  // at each grid angle, in time at the cam's speed
+  MotionCurves curves;
+  std::variant<PlateCamAnalysis, CylindricalCamAnalysis> cam;  // as the design's cam
+
+  // The largest |pressure angle| and where (rad): the plate cam's analysis, or the cylindrical
+  // cam's grid maximum.
+  Extremum max_pressure_angle() const;
+  const MotionExtrema& motion_extrema() const;
+};
+
+CamAnalysisStage analyse_cam(const CamDesignStage& design, const CamJobOptions& options = {});
+
+// ---- Stage 3: convert ----------------------------------------------------------------------
+
+// The measured radial error |ρ − R(ψ)| of the NURBS profile along it, sorted by polar angle.
+struct ErrorCurve {
+  std::vector<double> angle;  // ψ in [0, 2π), rad
+  std::vector<double> error;  // mm
+};
+
+struct PlateProfile {
+  NurbsCurve2d curve;                   // the exact-degree contour
+  std::optional<LimitedCurve> limited;  // the degree-limited contour (profile_deg3.dxf)
+  // When the exact degree exceeds the project's max-degree: the profile exported instead.
+  std::optional<LimitedCurve> capped;
+  // The curve the CAD files carry: the capped profile when there is one, else the exact one.
+  const NurbsCurve2d& exported() const { return capped ? capped->curve : curve; }
+};
+
+struct CylindricalTrack {
+  NurbsCurve3d curve;   // the track centre line on the pitch cylinder
+  double offset = 0.0;  // the conversion is of z + offset (kept positive)
+  // With a groove depth: the walls on the −z and +z side of the track, within the tolerance.
+  std::vector<GrooveSurface> groove;
+};
+
+struct CamConversionStage {
   PolarFunction profile_function;  // contour R(ψ) (plate) or track height + offset (cylindrical)
   PolarConversion conversion;      // of profile_function
-  NurbsCurve2d profile;            // plate cams: the exact-degree contour
-  NurbsCurve3d track;              // cylindrical cams: the track centre line on the cylinder
-  double track_offset = 0.0;       // cylindrical: conversion of z + offset (kept positive)
-  // Cylindrical cams with a groove depth: the walls on the −z and +z side of the track, within
-  // the conversion tolerance.
-  std::vector<GrooveSurface> groove;
-  std::optional<LimitedCurve> limited;  // plate cams: degree-limited contour
-  // Plate cams whose exact degree exceeds the project's max-degree: the profile to export instead.
-  std::optional<LimitedCurve> capped;
-  // What the job left out and why (e.g. a degree-limited profile that cannot meet the tolerance).
+  ErrorCurve error;
+  std::variant<PlateProfile, CylindricalTrack> profile;  // as the design's cam
+  // What the stage left out and why (a degree-limited profile that cannot meet the tolerance).
   std::vector<std::string> warnings;
-  double seconds = 0.0;            // wall time of the computation
+
+  int degree() const;          // of the exact NURBS profile or track
+  int control_points() const;  // of the exact NURBS profile or track
+  std::size_t knot_count() const;
+};
+
+// Throws InputError (a tolerance below the converter's floor, …) / NumericalError from the
+// converter.
+CamConversionStage convert_cam(const CamDesignStage& design, const CamJobOptions& options = {});
+
+// ---- The whole job -------------------------------------------------------------------------
+
+struct CamJobResult {
+  CamDesignStage design;
+  CamAnalysisStage analysis;
+  CamConversionStage conversion;
+  double seconds = 0.0;  // wall time of the three stages
+
+  const CamProject& project() const { return design.project; }
+  bool plate() const { return std::holds_alternative<PlateCam>(design.cam); }
 };
 
 // What the job converts: the plate cam's contour R(ψ), or the cylindrical cam's track height

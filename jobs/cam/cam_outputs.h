@@ -1,16 +1,16 @@
-// Writing a cam job's results: CAD files (IGES, STEP, DXF, X3D, optionally a STEP solid), plots
+// The cam job's output bundle: CAD files (IGES, STEP, DXF, X3D, optionally a STEP solid), plots
 // (SVG), the SVAJ table (CSV) and the reports (report.json, report.html) into one directory.
 // Every file is written atomically; nothing is written before everything has been computed.
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "jobs/cam/cam_job.h"
+#include "jobs/cam/cam_report.h"
 
 namespace polarform {
 
@@ -20,8 +20,10 @@ struct CamOutputOptions {
   std::optional<double> bore_diameter;    // mm, with the solid
 };
 
-// The machine-readable report (field names documented in docs/file-formats.md).
-nlohmann::ordered_json cam_report_json(const CamJobResult& r, const std::vector<std::string>& files);
+// Every output of the job rendered in memory, file name → content: the CAD files, figures, CSV and
+// both reports. The studio exports single files from it, so they equal the CLI's byte for byte.
+std::map<std::string, std::string> render_cam_outputs(const CamJobResult& r,
+                                                      const CamOutputOptions& options = {});
 
 // Writes every output into dir (created if missing) and returns the file names written.
 std::vector<std::string> write_cam_outputs(const CamJobResult& r, const std::filesystem::path& dir,

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <numbers>
 
-#include "designers/convert/conversion_error.h"
 #include "src/number_text.h"
 #include "src/units.h"
 
@@ -12,19 +11,37 @@ namespace polarform {
 namespace {
 
 const char* kJumpColor = "#d55e00";
+const char* kCamAngle = "cam angle θ [deg]";
 
 std::vector<double> in_degrees(const std::vector<double>& radians) {
   std::vector<double> out;
   for (double x : radians) out.push_back(x * kDegreesPerRadian);
-  out.push_back(360.0);  // close the revolution
   return out;
 }
 
-// Segment boundaries as grey lines, continuity violations as labelled orange lines.
-void mark_segments(const CamJobResult& r, Plot& plot, bool labels) {
-  for (std::size_t k = 1; k < r.program.segments().size(); ++k)
-    plot.add_vertical_line(r.program.segments()[k].start() * kDegreesPerRadian);
-  for (const ContinuityIssue& issue : r.continuity) {
+// The grid angles in degrees with 360 appended, to close the revolution.
+std::vector<double> closed_degrees(const std::vector<double>& radians) {
+  std::vector<double> out = in_degrees(radians);
+  out.push_back(360.0);
+  return out;
+}
+
+void close(std::vector<double>& values) { values.push_back(values.front()); }
+
+void cam_angle_axis(Plot& plot) {
+  plot.x_label = kCamAngle;
+  plot.x_range = AxisRange{0, 360};
+  plot.x_tick_step = 30;
+}
+
+// Segment boundaries as grey lines (draggable: boundary k carries handle k), continuity issues
+// as orange lines, labelled on the first panel only.
+void mark_segments(const CamDesignStage& d, Plot& plot, bool labels, bool draggable = false) {
+  const auto& segments = d.program.segments();
+  for (std::size_t k = 1; k < segments.size(); ++k)
+    plot.add_vertical_line(segments[k].start() * kDegreesPerRadian, {}, {},
+                           draggable ? static_cast<int>(k) : -1);
+  for (const ContinuityIssue& issue : d.continuity) {
     static const char* names[] = {"s", "v", "a", "j"};
     plot.add_vertical_line(issue.angle * kDegreesPerRadian,
                            labels ? std::string(names[issue.derivative]) + " jump" : "",
@@ -59,127 +76,144 @@ void add_points(Plot& plot, std::string label, const std::vector<Eigen::Vector2d
 void add_circle(Plot& plot, std::string label, double radius, Series::Style style) {
   std::vector<Eigen::Vector2d> points;
   for (int k = 0; k <= 360; ++k)
-    points.emplace_back(radius * std::cos(k / kDegreesPerRadian),
-                        radius * std::sin(k / kDegreesPerRadian));
+    points.emplace_back(radius * std::cos(k * kRadiansPerDegree),
+                        radius * std::sin(k * kRadiansPerDegree));
   add_points(plot, std::move(label), points, style, "#999999");
 }
 
 }  // namespace
 
-Figure svaj_figure(const CamJobResult& r) {
-  Figure f(900, 960);
-  f.title = "Follower motion at " + std::to_string(static_cast<int>(std::lround(r.project.cam.rpm))) +
-            " rpm";
+Figure svaj_figure(const CamDesignStage& d, const CamAnalysisStage& a, const SvajFigureOptions& o) {
+  Figure f(900, o.pressure_panel ? 1160 : 960);
+  f.title = "Follower motion at " + number_text(d.project.cam.rpm) + " rpm";
   f.shared_x = true;
-  const std::vector<double> x = in_degrees(r.angles);
-  struct Panel {
-    const char* label;
-    double scale;
-    double Kinematics::*field;
-  };
-  const Panel panels[] = {{"s [mm]", 1.0, &Kinematics::displacement},
-                          {"v [mm/s]", 1.0, &Kinematics::velocity},
-                          {"a [m/s²]", 1e-3, &Kinematics::acceleration},
-                          {"j [m/s³]", 1e-3, &Kinematics::jerk}};
-  for (const Panel& p : panels) {
+  const MotionCurves& m = a.curves;
+  const std::vector<double> x = in_degrees(m.theta);
+  // At constant cam speed ω, dᵏs/dtᵏ = ωᵏ dᵏs/dθᵏ; accelerations and jerks in metres.
+  const double w = angular_speed(d.project.cam.rpm);
+  const double time_scale[4] = {1, w, w * w * kMetresPerMillimetre,
+                                w * w * w * kMetresPerMillimetre};
+  const char* per_radian[4] = {"s [mm]", "v [mm/rad]", "a [mm/rad²]", "j [mm/rad³]"};
+  const char* in_time[4] = {"s [mm]", "v [mm/s]", "a [m/s²]", "j [m/s³]"};
+  const std::vector<double>* values[4] = {&m.s, &m.v, &m.a, &m.j};
+  for (int k = 0; k < 4; ++k) {
+    const double scale = o.time_units ? time_scale[k] : 1.0;
     Plot& plot = f.add_panel();
-    plot.y_label = p.label;
-    plot.x_label = "cam angle θ [deg]";
-    plot.x_tick_step = 30;
+    plot.y_label = (o.time_units ? in_time : per_radian)[k];
+    cam_angle_axis(plot);
     std::vector<double> y;
-    for (const Kinematics& k : r.kinematics) y.push_back(k.*p.field * p.scale);
-    y.push_back(y.front());
+    for (double v : *values[k]) y.push_back(v * scale);
     plot.add(series("", x, std::move(y)));
-    mark_segments(r, plot, &p == &panels[0]);
+    mark_segments(d, plot, k == 0, o.draggable_boundaries);
+    for (const ContinuityIssue& issue : d.continuity) {
+      if (issue.derivative != k) continue;
+      // A jump at the seam shows at both ends of the revolution.
+      for (double at : {issue.angle * kDegreesPerRadian, issue.angle == 0.0 ? 360.0 : -1.0}) {
+        if (at < 0) continue;
+        plot.add_highlight(at, issue.before_value * scale, issue.message(), kJumpColor);
+        plot.add_highlight(at, issue.after_value * scale, issue.message(), kJumpColor);
+      }
+    }
+  }
+  if (o.pressure_panel) {
+    Plot& plot = f.add_panel();
+    plot.y_label = "pressure angle [deg]";
+    cam_angle_axis(plot);
+    plot.add(series("", x, in_degrees(m.pressure_angle)));
+    const bool plate = std::holds_alternative<PlateCam>(d.cam);
+    if (!plate) plot.title = "at the pitch radius";
+    if (o.pressure_angle_limit && plate && d.project.cam.follower.kind != FollowerKind::FlatFaced) {
+      const double limit = *o.pressure_angle_limit * kDegreesPerRadian;
+      plot.add_horizontal_line(limit, "limit " + number_text(limit) + "°", kJumpColor);
+      plot.add_horizontal_line(-limit, "", kJumpColor);
+    }
+    mark_segments(d, plot, false, o.draggable_boundaries);
   }
   return f;
 }
 
-Figure analysis_figure(const CamJobResult& r) {
+Figure analysis_figure(const CamDesignStage& d, const CamAnalysisStage& a) {
   Figure f(900, 640);
   f.shared_x = true;
-  const std::vector<double> x = in_degrees(r.angles);
+  const std::vector<double> x = closed_degrees(a.angles);
   Plot& pressure = f.add_panel();
   pressure.y_label = "pressure angle [deg]";
-  pressure.x_label = "cam angle θ [deg]";
-  pressure.x_tick_step = 30;
+  cam_angle_axis(pressure);
   Plot& radius = f.add_panel();
   radius.y_label = "radius of curvature [mm]";
-  if (r.analysis) {
+  if (const auto* p = std::get_if<PlateCamAnalysis>(&a.cam)) {
     f.title = "Pressure angle and radius of curvature";
     std::vector<double> phi, contour, pitch;
-    for (const CamSample& s : r.analysis->samples) {
+    for (const CamSample& s : p->analysis.samples) {
       phi.push_back(s.pressure_angle * kDegreesPerRadian);
       contour.push_back(s.contour_curvature != 0 ? 1 / s.contour_curvature : NAN);
       pitch.push_back(s.pitch_curvature != 0 ? 1 / s.pitch_curvature : NAN);
     }
-    for (auto* v : {&phi, &contour, &pitch}) v->push_back(v->front());
+    for (auto* v : {&phi, &contour, &pitch}) close(*v);
     pressure.add(series("", x, phi));
     radius.add(series("contour", x, contour));
-    if (r.project.cam.follower.kind == FollowerKind::Roller) {
+    const Follower& follower = d.project.cam.follower;
+    if (follower.kind == FollowerKind::Roller) {
       radius.add(series("pitch curve", x, pitch, Series::Style::dashed));
-      radius.add_horizontal_line(r.project.cam.follower.roller_radius, "roller radius", kJumpColor);
+      radius.add_horizontal_line(follower.roller_radius, "roller radius", kJumpColor);
     }
     // Radii go to ±∞ at inflections: show the working range.
-    const double limit = 4 * (r.project.cam.base_radius + r.program.stroke());
+    const double limit = 4 * (d.project.cam.base_radius + d.program.stroke());
     radius.y_range = AxisRange{-limit, limit};
-    for (const AngleRange& u : r.analysis->undercut)
+    for (const AngleRange& u : p->analysis.undercut)
       radius.add_band(u.from * kDegreesPerRadian, u.to * kDegreesPerRadian, "undercut", kJumpColor);
   } else {
+    const auto& c = std::get<CylindricalCamAnalysis>(a.cam);
     f.title = "Pressure angle at the pitch radius";
-    std::vector<double> phi;
-    for (double a : r.barrel_pressure_angle) phi.push_back(a * kDegreesPerRadian);
-    phi.push_back(phi.front());
+    std::vector<double> phi = in_degrees(c.pressure_angle);
+    close(phi);
     pressure.add(series("", x, phi));
     std::vector<double> z;
-    for (const Kinematics& k : r.kinematics) z.push_back(r.project.cam.z0 + k.displacement);
-    z.push_back(z.front());
+    for (const Kinematics& k : a.kinematics) z.push_back(d.project.cam.z0 + k.displacement);
+    close(z);
     radius.y_label = "track height z [mm]";
     radius.add(series("", x, z));
   }
-  mark_segments(r, pressure, true);
-  mark_segments(r, radius, false);
+  mark_segments(d, pressure, true);
+  mark_segments(d, radius, false);
   return f;
 }
 
-Figure profile_figure(const CamJobResult& r) {
+Figure profile_figure(const CamDesignStage& d, const CamAnalysisStage& a,
+                      const CamConversionStage& c) {
   Figure f(800, 800);
   Plot& plot = f.add_panel();
   plot.equal_aspect = true;
   plot.x_label = "x [mm]";
   plot.y_label = "y [mm]";
-  if (r.plate) {
-    f.title = "Cam profile: degree " + std::to_string(r.profile.degree()) + ", " +
-              std::to_string(r.profile.size()) + " control points, " +
-              std::to_string(r.conversion.arcs.size()) + " arcs";
-    add_points(plot, "contour (NURBS)", sample_curve(r.profile, 2000), Series::Style::line, "#0072b2");
-    add_points(plot, "control polygon", r.profile.control_points(), Series::Style::line_markers, "#cc79a7");
-    add_circle(plot, "base circle", r.project.cam.base_radius, Series::Style::dashed);
-    if (r.project.cam.follower.kind == FollowerKind::Roller) {
-      std::vector<Eigen::Vector2d> pitch;
-      for (double theta : r.angles) {
-        Eigen::Vector2d p[1];
-        r.plate->pitch(theta, 0, p);
-        pitch.push_back(p[0]);
-      }
-      pitch.push_back(pitch.front());
-      add_points(plot, "pitch curve", pitch, Series::Style::dashed, "#009e73");
-    }
+  if (const auto* profile = std::get_if<PlateProfile>(&c.profile)) {
+    const NurbsCurve2d& curve = profile->curve;
+    f.title = "Cam profile: degree " + std::to_string(curve.degree()) + ", " +
+              std::to_string(curve.size()) + " control points, " +
+              std::to_string(c.conversion.arcs.size()) + " arcs";
+    add_points(plot, "contour (NURBS)", sample_curve(curve, 2000), Series::Style::line, "#0072b2");
+    add_points(plot, "control polygon", curve.control_points(), Series::Style::line_markers,
+               "#cc79a7");
+    add_circle(plot, "base circle", d.project.cam.base_radius, Series::Style::dashed);
+    if (d.project.cam.follower.kind == FollowerKind::Roller)
+      add_points(plot, "pitch curve", std::get<PlateCamAnalysis>(a.cam).curves.pitch,
+                 Series::Style::dashed, "#009e73");
   } else {
-    f.title = "Track centre line, developed: degree " + std::to_string(r.track.degree()) + ", " +
-              std::to_string(r.track.size()) + " control points";
+    const NurbsCurve3d& track = std::get<CylindricalTrack>(c.profile).curve;
+    f.title = "Track centre line, developed: degree " + std::to_string(track.degree()) + ", " +
+              std::to_string(track.size()) + " control points";
     plot.equal_aspect = false;
     plot.x_label = "arc length on the pitch cylinder [mm]";
     plot.y_label = "z [mm]";
     std::vector<double> x, z;
     double psi0 = 0.0, previous = 0.0;
     for (int k = 0; k <= 2000; ++k) {
-      const Eigen::Vector3d p = r.track(r.track.front() + (r.track.back() - r.track.front()) * k / 2000);
+      const Eigen::Vector3d p = track(track.front() + (track.back() - track.front()) * k / 2000);
       double psi = std::atan2(p.y(), p.x());
       if (k == 0) psi0 = previous = psi;
       psi = previous + std::remainder(psi - previous, 2 * std::numbers::pi);
       previous = psi;
-      x.push_back((psi - psi0) * r.project.cam.cylinder_radius);
+      x.push_back((psi - psi0) * d.project.cam.cylinder_radius);
       z.push_back(p.z());
     }
     plot.add(series("track centre (NURBS)", std::move(x), std::move(z)));
@@ -187,33 +221,24 @@ Figure profile_figure(const CamJobResult& r) {
   return f;
 }
 
-std::vector<std::pair<double, double>> radial_error_samples(const CamJobResult& r, int count) {
-  const NurbsCurve2d& c = r.conversion.curve;
-  std::vector<std::pair<double, double>> out;
-  for (int k = 0; k <= count; ++k) {
-    const double u = c.front() + (c.back() - c.front()) * k / count;
-    double psi;
-    const double e = radial_error_at(c, r.profile_function, u, u, &psi);
-    out.emplace_back(psi * kDegreesPerRadian, e);
-  }
-  return out;
-}
-
-Figure conversion_error_figure(const CamJobResult& r) {
+Figure conversion_error_figure(const CamConversionStage& c, bool log_scale) {
   Figure f(900, 420);
   f.title = "Measured radial error of the NURBS profile (tolerance " +
-            number_text(to_micrometres(r.conversion.tolerance)) + " µm)";
+            number_text(to_micrometres(c.conversion.tolerance)) + " µm)";
   Plot& plot = f.add_panel();
   plot.x_label = "polar angle ψ [deg]";
   plot.y_label = "radial error [µm]";
-  std::vector<double> x, y;
-  for (const auto& [psi, e] : radial_error_samples(r, 4000)) x.push_back(psi), y.push_back(e * 1e3);
-  plot.add(series("|ρ − R(ψ)|", std::move(x), std::move(y)));
-  plot.add_horizontal_line(r.conversion.tolerance * 1e3, "tolerance", kJumpColor);
-  for (std::size_t j = 1; j < r.conversion.arcs.size(); ++j)
-    plot.add_vertical_line(r.conversion.arcs[j].start * kDegreesPerRadian);
-  plot.add_annotation(r.conversion.arcs.front().start * kDegreesPerRadian,
-                      r.conversion.tolerance * 1e3, "grey lines: arc junctions");
+  plot.x_range = AxisRange{0, 360};
+  plot.x_tick_step = 30;
+  plot.log_y = log_scale;
+  std::vector<double> y;
+  for (double e : c.error.error) y.push_back(to_micrometres(e));
+  plot.add(series("|ρ − R(ψ)|", in_degrees(c.error.angle), std::move(y)));
+  plot.add_horizontal_line(to_micrometres(c.conversion.tolerance), "tolerance", kJumpColor);
+  for (std::size_t j = 1; j < c.conversion.arcs.size(); ++j)
+    plot.add_vertical_line(degrees_in_turn(c.conversion.arcs[j].start));
+  plot.add_annotation(degrees_in_turn(c.conversion.arcs.front().start),
+                      to_micrometres(c.conversion.tolerance), "grey lines: arc junctions");
   return f;
 }
 

@@ -1,19 +1,30 @@
-// The cam job's figures: SVAJ (four panels against cam angle), analyses (pressure angle, radii of
-// curvature, undercut), the profile itself (contour, control polygon, base and pitch circles) and
-// the measured conversion error along the profile.
+// The cam job's figures, built from its stages so that the studio can show them while a design is
+// edited and the output bundle can write them as SVG: SVAJ (stacked panels against cam angle,
+// with segment boundaries and every continuity issue), analyses (pressure angle, radii of
+// curvature, undercut; the cylindrical cam's pressure angle and track height), the profile itself
+// (contour, control polygon, base and pitch circles; the developed track) and the measured
+// conversion error along the profile.
 #pragma once
 
-#include "export/svg_plot.h"
+#include <optional>
+
+#include "export/figure.h"
 #include "jobs/cam/cam_job.h"
 
 namespace polarform {
 
-Figure svaj_figure(const CamJobResult& r);
-Figure analysis_figure(const CamJobResult& r);
-Figure profile_figure(const CamJobResult& r);
-Figure conversion_error_figure(const CamJobResult& r);
+struct SvajFigureOptions {
+  bool time_units = true;       // v [mm/s], a [m/s²], j [m/s³] at the cam's speed; else per rad
+  bool pressure_panel = false;  // a fifth panel: the pressure angle
+  std::optional<double> pressure_angle_limit;  // rad: ± lines on that panel (plate cams)
+  bool draggable_boundaries = false;           // boundary k (start of segment k) carries handle k
+};
 
-// (polar angle ψ, radial error) of the final curve at `count` parameters, ψ in degrees.
-std::vector<std::pair<double, double>> radial_error_samples(const CamJobResult& r, int count);
+Figure svaj_figure(const CamDesignStage& design, const CamAnalysisStage& analysis,
+                   const SvajFigureOptions& options = {});
+Figure analysis_figure(const CamDesignStage& design, const CamAnalysisStage& analysis);
+Figure profile_figure(const CamDesignStage& design, const CamAnalysisStage& analysis,
+                      const CamConversionStage& conversion);
+Figure conversion_error_figure(const CamConversionStage& conversion, bool log_scale = false);
 
 }  // namespace polarform

@@ -11,6 +11,7 @@
 #include "export/iges_writer.h"
 #include "export/ply_writer.h"
 #include "export/step_writer.h"
+#include "export/svg_plot.h"
 #include "export/x3d_writer.h"
 #include "jobs/fit/fit_plots.h"
 #include "polarform_version.h"
@@ -250,7 +251,7 @@ std::vector<std::string> write_fit_outputs(const FitJobResult& r,
   content[stem + ".stp"] = stp.str(step);
   content[stem + ".x3d"] =
       x3d.str("polarform " + r.method + " fit of " + r.input.filename().string());
-  const std::string preview = fit_preview_figure(r).svg();
+  const std::string preview = svg_document(fit_preview_figure(r));
   content["preview.svg"] = preview;
 
   const Eigen::VectorXd& d = r.report().signed_distance;

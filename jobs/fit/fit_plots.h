@@ -4,7 +4,7 @@
 // (cylindrical) in the fit's local frame (Bae 2002, eqs. (3.1), (3.6)).
 #pragma once
 
-#include "export/svg_plot.h"
+#include "export/figure.h"
 #include "jobs/fit/fit_job.h"
 
 namespace polarform {

@@ -11,6 +11,7 @@
 #include "export/html_report.h"
 #include "export/iges_writer.h"
 #include "export/step_writer.h"
+#include "export/svg_plot.h"
 #include "export/x3d_writer.h"
 #include "jobs/scan_cam/scan_cam_plots.h"
 #include "polarform_version.h"
@@ -242,11 +243,12 @@ std::vector<std::string> write_scan_cam_outputs(const ScanCamJobResult& r,
   content["profile.x3d"] = x3d.str(title);
   content["profile.dxf"] = dxf.str();
   content["svaj.csv"] = svaj_csv(r);
-  std::map<std::string, std::string> svgs = {{"svaj.svg", scan_svaj_figure(r).svg()},
-                                             {"deviation.svg", scan_deviation_figure(r).svg()},
-                                             {"profile.svg", scan_profile_figure(r).svg()}};
+  std::map<std::string, std::string> svgs = {
+      {"svaj.svg", svg_document(scan_svaj_figure(r))},
+      {"deviation.svg", svg_document(scan_deviation_figure(r))},
+      {"profile.svg", svg_document(scan_profile_figure(r))}};
   if (r.comparison) {
-    svgs["svaj_difference.svg"] = scan_svaj_difference_figure(r).svg();
+    svgs["svaj_difference.svg"] = svg_document(scan_svaj_difference_figure(r));
     content["deviation.csv"] = deviation_csv(*r.comparison);
   }
   content.insert(svgs.begin(), svgs.end());

@@ -4,7 +4,7 @@
 // profile in the cam frame with the scan and the nominal contour.
 #pragma once
 
-#include "export/svg_plot.h"
+#include "export/figure.h"
 #include "jobs/scan_cam/scan_cam_job.h"
 
 namespace polarform {

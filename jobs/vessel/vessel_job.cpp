@@ -15,30 +15,48 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-}  // namespace
-
-// Bae 2002, §5.2: synthesise R(θ), convert it with quasi-uniform base arcs (§5.1), revolve it.
-VesselJobResult run_vessel_job(const VesselProject& project) {
-  const auto start = Clock::now();
+void check_tolerance(const VesselProject& project) {
   if (!(project.tolerance >= kMinTolerance))
     throw InputError("conversion tolerance " + format_round_trip(project.tolerance) +
                      " mm: expected >= " + format_round_trip(kMinTolerance) + " mm");
-  VesselJobResult r;
-  r.project = project;
-  r.design = to_design(project);
-  r.solution = solve_vessel(r.design);
-  r.seconds.solve = seconds_since(start);
+}
 
+}  // namespace
+
+// Bae 2002, §5.2: synthesise R(θ) from the prescribed curvatures under the end conditions (5.5).
+VesselSolveStage solve_vessel_head(const VesselProject& project) {
+  const auto start = Clock::now();
+  VesselSolveStage s;
+  s.project = project;
+  s.design = to_design(project);
+  s.solution = solve_vessel(s.design);
+  s.seconds = seconds_since(start);
+  return s;
+}
+
+// Bae 2002, §5.1: convert R(θ) with quasi-uniform base arcs, then revolve it.
+VesselConversionStage convert_vessel_head(const VesselSolveStage& solved) {
+  check_tolerance(solved.project);
   const auto converting = Clock::now();
+  VesselConversionStage c;
   ConversionOptions options;
-  options.tolerance = project.tolerance;
-  r.conversion = convert_polar_function(r.solution.profile, options);
-  r.seconds.convert = seconds_since(converting);
-
+  options.tolerance = solved.project.tolerance;
+  c.conversion = convert_polar_function(solved.solution.profile, options);
+  c.convert_seconds = seconds_since(converting);
   const auto revolving = Clock::now();
-  r.surfaces = vessel_surfaces(r.conversion.curve, r.design.length);
-  r.seconds.revolve = seconds_since(revolving);
-  r.seconds.total = seconds_since(start);
+  c.surfaces = vessel_surfaces(c.conversion.curve, solved.design.length);
+  c.revolve_seconds = seconds_since(revolving);
+  return c;
+}
+
+VesselJobResult run_vessel_job(const VesselProject& project) {
+  const auto start = Clock::now();
+  check_tolerance(project);  // before the synthesis's work
+  VesselJobResult r;
+  r.solved = solve_vessel_head(project);
+  r.converted = convert_vessel_head(r.solved);
+  r.seconds = {r.solved.seconds, r.converted.convert_seconds, r.converted.revolve_seconds,
+               seconds_since(start)};
   return r;
 }
 

@@ -1,8 +1,11 @@
-// The vessel job: everything `polarform vessel` and the studio compute for a vessel project — the
-// head R(θ) synthesised from prescribed curvatures (Bae 2002, §5.2) with its residuals, the exact
-// NURBS profile converted to the tolerance with its measured error, the revolved head and vessel
-// surfaces, and the membrane stresses of the design and of the preset it replaces. Computing
-// writes nothing.
+// The vessel job: everything `polarform vessel` and the studio compute for a vessel project, as a
+// staged pipeline the studio runs in the background after every edit:
+//   solve    the head R(θ) synthesised from prescribed curvatures (Bae 2002, §5.2) with its
+//            residuals, and the membrane stresses of the design and of the preset it replaces;
+//   convert  the exact NURBS profile within the tolerance with its measured error (§5.1), and
+//            the revolved head and vessel surfaces.
+// The result value is what the studio shows and what the output bundle (vessel_outputs.h)
+// writes. Computing writes nothing.
 #pragma once
 
 #include "designers/convert/polar_conversion.h"
@@ -12,6 +15,27 @@
 
 namespace polarform {
 
+struct VesselSolveStage {
+  VesselProject project;    // as run (the tolerance after any override)
+  VesselDesign design;      // to_design(project)
+  VesselSolution solution;  // synthesis, curvature, stresses, preset comparison, warnings
+  double seconds = 0.0;     // wall time of the synthesis and analyses
+};
+
+// Throws InputError for a bad design and passes on the synthesis's NumericalError (no
+// convergence, R <= 0).
+VesselSolveStage solve_vessel_head(const VesselProject& project);
+
+struct VesselConversionStage {
+  PolarConversion conversion;  // of solution.profile over [0, π] to project.tolerance
+  VesselSurfaces surfaces;     // revolved from conversion.curve
+  double convert_seconds = 0.0, revolve_seconds = 0.0;
+};
+
+// Throws InputError (a tolerance below the converter's floor, surfaces that cannot be built) or
+// NumericalError from the converter.
+VesselConversionStage convert_vessel_head(const VesselSolveStage& solved);
+
 struct VesselJobTimings {  // wall time, seconds
   double solve = 0.0;    // synthesis and analyses (curvature, stresses, preset comparison)
   double convert = 0.0;  // R(θ) → NURBS to the tolerance, measured
@@ -20,16 +44,12 @@ struct VesselJobTimings {  // wall time, seconds
 };
 
 struct VesselJobResult {
-  VesselProject project;       // as run (the tolerance after any override)
-  VesselDesign design;         // to_design(project)
-  VesselSolution solution;     // synthesis, curvature, stresses, preset comparison, warnings
-  PolarConversion conversion;  // of solution.profile over [0, π] to project.tolerance
-  VesselSurfaces surfaces;     // revolved from conversion.curve
+  VesselSolveStage solved;
+  VesselConversionStage converted;
   VesselJobTimings seconds;
 };
 
-// Throws InputError for a bad design (whatever solve_vessel, the converter and vessel_surfaces
-// reject) and passes on the synthesis's NumericalError (no convergence, R <= 0).
+// The tolerance is checked first; then both stages run.
 VesselJobResult run_vessel_job(const VesselProject& project);
 
 }  // namespace polarform

@@ -12,8 +12,11 @@
 #include "export/html_report.h"
 #include "export/iges_writer.h"
 #include "export/step_writer.h"
+#include "export/svg_plot.h"
 #include "jobs/report/conversion_report.h"
+#include "jobs/report/output_files.h"
 #include "jobs/vessel/vessel_plots.h"
+#include "jobs/vessel/vessel_report.h"
 #include "polarform_version.h"
 #include "src/error.h"
 #include "src/number_text.h"
@@ -25,101 +28,7 @@ namespace {
 
 using json = nlohmann::ordered_json;
 
-// "mm", "mm/rad" or "mm/rad^2" for a condition named "R(0)", "R'(π)", "R''(0)", …
-std::string condition_unit(const std::string& name) {
-  const auto order = std::count(name.begin(), name.end(), '\'');
-  return order == 0 ? "mm" : order == 1 ? "mm/rad" : "mm/rad^2";
-}
-
-json surface_json(const NurbsSurface& s) {
-  return {{"degree_u", s.degree_u()}, {"degree_v", s.degree_v()},
-          {"control_points_u", s.size_u()}, {"control_points_v", s.size_v()}};
-}
-
-// Membrane theory (DESIGN/issue 6): the cylinder's stresses, the head's extremes, the bands.
-json stresses_json(const StressProfile& p) {
-  json j;
-  const StressSample& cylinder = p.samples.front();
-  j["cylinder"] = {{"meridional_stress_mpa", cylinder.meridional_stress},
-                   {"hoop_stress_mpa", cylinder.hoop_stress}};
-  const StressSample *max_phi = nullptr, *max_theta = nullptr, *min_theta = nullptr;
-  double max_stress = 0.0;
-  for (const StressSample& s : p.samples) {
-    max_stress = std::max({max_stress, s.meridional_stress, s.hoop_stress});
-    if (s.on_cylinder) continue;
-    if (!max_phi || s.meridional_stress > max_phi->meridional_stress) max_phi = &s;
-    if (!max_theta || s.hoop_stress > max_theta->hoop_stress) max_theta = &s;
-    if (!min_theta || s.hoop_stress < min_theta->hoop_stress) min_theta = &s;
-  }
-  j["head"] = {{"max_meridional_stress_mpa", max_phi->meridional_stress},
-               {"max_meridional_at_deg", max_phi->theta * kDegreesPerRadian},
-               {"max_hoop_stress_mpa", max_theta->hoop_stress},
-               {"max_hoop_at_deg", max_theta->theta * kDegreesPerRadian},
-               {"min_hoop_stress_mpa", min_theta->hoop_stress},
-               {"min_hoop_at_deg", min_theta->theta * kDegreesPerRadian}};
-  j["max_stress_mpa"] = max_stress;
-  j["compressive_hoop"] = !p.compressive_hoop.empty();
-  j["compressive_hoop_bands"] = json::array();
-  for (const CompressiveBand& b : p.compressive_hoop)
-    j["compressive_hoop_bands"].push_back({{"theta_from_deg", b.theta_from * kDegreesPerRadian},
-                                           {"theta_to_deg", b.theta_to * kDegreesPerRadian},
-                                           {"s_from_mm", b.s_from},
-                                           {"s_to_mm", b.s_to},
-                                           {"min_hoop_stress_mpa", b.min_hoop_stress}});
-  return j;
-}
-
-json preset_json(const VesselJobResult& r) {
-  const HeadPreset& h = *r.design.preset;
-  const PresetComparison& c = *r.solution.preset;
-  json j = {{"kind", head_kind_name(h.kind)}, {"name", c.shape.name}};
-  if (h.kind == HeadKind::ellipsoidal) j["ratio"] = h.ratio;
-  if (h.kind == HeadKind::torispherical) {
-    j["crown_mm"] = h.crown;
-    j["knuckle_mm"] = h.knuckle;
-  }
-  j["depth_mm"] = c.shape.depth;
-  j["max_deviation_mm"] = c.max_deviation;
-  j["deviation_at_deg"] = c.deviation_angle * kDegreesPerRadian;
-  j["curvature_jumps"] = json::array();
-  for (const CurvatureJump& k : c.shape.jumps)
-    j["curvature_jumps"].push_back({{"theta_deg", k.theta * kDegreesPerRadian},
-                                    {"kappa_before_per_mm", k.kappa_before},
-                                    {"kappa_after_per_mm", k.kappa_after}});
-  j["stresses"] = stresses_json(c.stresses);
-  return j;
-}
-
-json synthesis_json(const VesselJobResult& r) {
-  const SynthesisResult& s = r.solution.synthesis;
-  const SynthesisSettings& set = r.design.synthesis;
-  double max_residual = 0.0, sum_squares = 0.0;
-  for (const TargetResidual& t : s.targets) {
-    max_residual = std::max(max_residual, std::abs(t.residual()));
-    sum_squares += t.residual() * t.residual();
-  }
-  return {{"degree", set.degree},
-          {"ordinates", set.ordinates},
-          {"smoothing", set.smoothing},
-          {"symmetric", set.symmetric},
-          {"unknowns", s.unknowns},
-          {"free_parameters", s.free_parameters},
-          {"targets_from_preset", r.design.targets.empty()},
-          {"target_count", s.targets.size()},
-          {"iterations", s.iterations},
-          {"max_iterations", set.max_iterations},
-          {"termination", s.termination},
-          {"objective", s.objective},
-          {"fit_term", s.fit_term},
-          {"stationarity", s.stationarity},
-          {"max_abs_residual_per_mm", max_residual},
-          {"rms_residual_per_mm", std::sqrt(sum_squares / s.targets.size())},
-          {"max_violation", s.max_violation},
-          {"min_radius_mm", s.min_radius},
-          {"min_radius_at_deg", s.min_radius_angle * kDegreesPerRadian}};
-}
-
-std::string profile_csv(const VesselJobResult& r) {
+std::string profile_csv(const VesselSolveStage& r) {
   const VesselSolution& s = r.solution;
   std::vector<std::string> headers = {"theta [deg]", "R [mm]", "dR/dtheta [mm/rad]",
                                       "d2R/dtheta2 [mm/rad^2]", "x [mm]", "z [mm]",
@@ -157,8 +66,8 @@ std::string micrometres(double mm) { return format_trimmed(mm * 1e3, 4) + " µm"
 
 std::string html_report(const VesselJobResult& r, const VesselOutputOptions& o, const json& report,
                         const std::map<std::string, std::string>& svgs) {
-  const VesselSolution& s = r.solution;
-  const PolarConversion& c = r.conversion;
+  const VesselSolution& s = r.solved.solution;
+  const PolarConversion& c = r.converted.conversion;
   const json& stresses = report["stresses"];
   HtmlReport html("polarform vessel report: " + o.design_name);
   html.add_key_figures(
@@ -221,51 +130,8 @@ std::string html_report(const VesselJobResult& r, const VesselOutputOptions& o, 
 
 }  // namespace
 
-json vessel_report_json(const VesselJobResult& r, const std::vector<std::string>& files) {
-  const VesselDesign& d = r.design;
-  const VesselSolution& s = r.solution;
-  const PolarConversion& c = r.conversion;
-  json j;
-  j["polarform_version"] = POLARFORM_VERSION;
-  j["command"] = "vessel";
-  j["vessel"] = {{"radius_mm", d.radius}, {"length_mm", d.length},
-                 {"thickness_mm", d.thickness}, {"pressure_mpa", d.pressure}};
-  j["synthesis"] = synthesis_json(r);
-  j["targets"] = json::array();
-  for (const TargetResidual& t : s.synthesis.targets)
-    j["targets"].push_back({{"theta_deg", t.theta * kDegreesPerRadian},
-                            {"target_per_mm", t.target},
-                            {"achieved_per_mm", t.achieved},
-                            {"residual_per_mm", t.residual()},
-                            {"weight", t.weight}});
-  j["conditions"] = json::array();
-  for (const ConditionViolation& v : s.synthesis.conditions)
-    j["conditions"].push_back({{"name", v.name}, {"unit", condition_unit(v.name)},
-                               {"prescribed", v.prescribed}, {"achieved", v.achieved},
-                               {"violation", v.violation()}});
-  j["head"] = {{"depth_mm", s.depth},
-               {"junction_radius_mm", s.junction_radius},
-               {"junction_curvature_per_mm", s.junction_curvature},
-               {"junction_slope_deg", s.junction_slope * kDegreesPerRadian},
-               {"apex_slope_deg", s.apex_slope * kDegreesPerRadian}};
-  // Conversion: the same field names as the cam report.
-  add_conversion_fields(j, c, c.curve.degree(), c.curve.size(), c.curve.knots().size());
-  j["surfaces"] = {{"head", surface_json(r.surfaces.head)},
-                   {"cylinder", surface_json(r.surfaces.cylinder)},
-                   {"far_head", surface_json(r.surfaces.far_head)}};
-  j["stresses"] = stresses_json(s.stresses);
-  j["preset"] = s.preset ? preset_json(r) : json(nullptr);
-  j["warnings"] = s.warnings;
-  j["timings"] = {{"solve_s", r.seconds.solve}, {"convert_s", r.seconds.convert},
-                  {"revolve_s", r.seconds.revolve}, {"total_s", r.seconds.total}};
-  j["files"] = files;
-  return j;
-}
-
-std::vector<std::string> write_vessel_outputs(const VesselJobResult& r,
-                                              const std::filesystem::path& dir,
-                                              const VesselOutputOptions& o) {
-  // Everything is rendered in memory first, so a failure writes nothing.
+std::map<std::string, std::string> render_vessel_outputs(const VesselJobResult& r,
+                                                         const VesselOutputOptions& o) {
   std::map<std::string, std::string> content;
   IgesHeader iges;
   iges.description = "polarform " + std::string(POLARFORM_VERSION) + " vessel " + o.design_name;
@@ -281,45 +147,50 @@ std::vector<std::string> write_vessel_outputs(const VesselJobResult& r,
   };
 
   // The profile in the meridian plane y = 0 (the surfaces' frame); the DXF as a drawing (x, y).
-  const NurbsCurve3d meridian = in_meridian_plane(r.conversion.curve);
+  const NurbsCurve3d meridian = in_meridian_plane(r.converted.conversion.curve);
   IgesWriter profile_igs;
   profile_igs.add(meridian, "HEAD PROFILE");
   write_iges(profile_igs, "profile.igs");
   StepWriter profile_stp(o.design_name + " profile");
   profile_stp.add(meridian, "head profile");
   write_step(profile_stp, "profile.stp");
-  DxfWriter dxf(DxfOptions{std::max(10, r.conversion.curve.degree()), 1e-6});
-  dxf.add(r.conversion.curve, "PROFILE");
+  DxfWriter dxf(DxfOptions{std::max(10, r.converted.conversion.curve.degree()), 1e-6});
+  dxf.add(r.converted.conversion.curve, "PROFILE");
   content["profile.dxf"] = dxf.str();
 
   IgesWriter head_igs;
-  head_igs.add(r.surfaces.head, "HEAD");
+  head_igs.add(r.converted.surfaces.head, "HEAD");
   write_iges(head_igs, "head.igs");
   StepWriter head_stp(o.design_name + " head");
-  head_stp.add(r.surfaces.head, "head");
+  head_stp.add(r.converted.surfaces.head, "head");
   write_step(head_stp, "head.stp");
   StepWriter vessel_stp(o.design_name);
-  vessel_stp.add(r.surfaces.head, "head");
-  vessel_stp.add(r.surfaces.cylinder, "cylinder");
-  vessel_stp.add(r.surfaces.far_head, "far head");
+  vessel_stp.add(r.converted.surfaces.head, "head");
+  vessel_stp.add(r.converted.surfaces.cylinder, "cylinder");
+  vessel_stp.add(r.converted.surfaces.far_head, "far head");
   write_step(vessel_stp, "vessel.stp");
 
-  content["profile.csv"] = profile_csv(r);
-  content["stress.csv"] = stress_csv(r.solution.stresses);
-  const std::map<std::string, std::string> svgs = {{"curvature.svg", curvature_figure(r).svg()},
-                                                   {"stress.svg", stress_figure(r).svg()},
-                                                   {"profile.svg", profile_figure(r).svg()}};
+  content["profile.csv"] = profile_csv(r.solved);
+  content["stress.csv"] = stress_csv(r.solved.solution.stresses);
+  const std::map<std::string, std::string> svgs = {
+      {"curvature.svg", svg_document(curvature_figure(r.solved))},
+      {"stress.svg", svg_document(stress_figure(r.solved))},
+      {"profile.svg", svg_document(profile_figure(r.solved, &r.converted))}};
   content.insert(svgs.begin(), svgs.end());
-  std::vector<std::string> files;
-  for (const auto& [name, text] : content) files.push_back(name);
-  files.push_back("report.json");
-  files.push_back("report.html");
+  const std::vector<std::string> files = report_file_list(content);
   const json report = vessel_report_json(r, files);
   content["report.json"] = report.dump(2) + "\n";
   content["report.html"] = html_report(r, o, report, svgs);
+  return content;
+}
 
+std::vector<std::string> write_vessel_outputs(const VesselJobResult& r,
+                                              const std::filesystem::path& dir,
+                                              const VesselOutputOptions& o) {
+  // Everything is rendered in memory first, so a failure writes nothing.
+  const std::map<std::string, std::string> content = render_vessel_outputs(r, o);
   write_files_atomically(dir, content);
-  return files;
+  return report_file_list(content);
 }
 
 }  // namespace polarform

@@ -56,7 +56,7 @@ Series meridian_series(std::string label, const PolarFunction& f, int count, Ser
 
 }  // namespace
 
-Figure curvature_figure(const VesselJobResult& r) {
+Figure curvature_figure(const VesselSolveStage& r) {
   const VesselSolution& s = r.solution;
   Figure f(900, 680);
   f.title = "Curvature along the head: prescribed targets and the synthesised profile";
@@ -88,7 +88,7 @@ Figure curvature_figure(const VesselJobResult& r) {
   return f;
 }
 
-Figure stress_figure(const VesselJobResult& r) {
+Figure stress_figure(const VesselSolveStage& r) {
   const VesselSolution& s = r.solution;
   Figure f(900, 560);
   f.title = "Membrane stresses at " + format_trimmed(r.design.pressure, 3) + " MPa, wall " +
@@ -110,12 +110,8 @@ Figure stress_figure(const VesselJobResult& r) {
   return f;
 }
 
-Figure profile_figure(const VesselJobResult& r) {
-  const NurbsCurve2d& c = r.conversion.curve;
+Figure profile_figure(const VesselSolveStage& r, const VesselConversionStage* converted) {
   Figure f(800, 620);
-  f.title = "Head profile: degree " + std::to_string(c.degree()) + ", " +
-            std::to_string(c.size()) + " control points, " +
-            std::to_string(r.conversion.arcs.size()) + " arcs";
   Plot& plot = f.add_panel();
   plot.equal_aspect = true;
   plot.x_label = "x, radial [mm]";
@@ -123,20 +119,31 @@ Figure profile_figure(const VesselJobResult& r) {
   if (r.solution.preset)
     plot.add(meridian_series("preset", r.solution.preset->shape.profile, 720, Series::Style::dashed,
                              kPresetColor));
-  // The polygon under the curve; its points marked only while they stay apart.
-  const auto polygon_style = c.size() <= 60 ? Series::Style::line_markers : Series::Style::line;
-  Series polygon{"control polygon", {}, {}, polygon_style, "#cc79a7"};
-  for (const Eigen::Vector2d& p : c.control_points())
-    polygon.x.push_back(p.x()), polygon.y.push_back(p.y());
-  plot.add(std::move(polygon));
-  Series curve{"profile (NURBS)", {}, {}, Series::Style::line, kDesignColor};
-  for (int k = 0; k <= 2000; ++k) {
-    const Eigen::Vector2d p = c(c.front() + (c.back() - c.front()) * k / 2000);
-    curve.x.push_back(p.x()), curve.y.push_back(p.y());
+  if (converted) {
+    const NurbsCurve2d& c = converted->conversion.curve;
+    f.title = "Head profile: degree " + std::to_string(c.degree()) + ", " +
+              std::to_string(c.size()) + " control points, " +
+              std::to_string(converted->conversion.arcs.size()) + " arcs";
+    // The polygon under the curve; its points marked only while they stay apart.
+    const auto polygon_style = c.size() <= 60 ? Series::Style::line_markers : Series::Style::line;
+    Series polygon{"control polygon", {}, {}, polygon_style, "#cc79a7"};
+    for (const Eigen::Vector2d& p : c.control_points())
+      polygon.x.push_back(p.x()), polygon.y.push_back(p.y());
+    plot.add(std::move(polygon));
+    Series curve{"profile (NURBS)", {}, {}, Series::Style::line, kDesignColor};
+    for (int k = 0; k <= 2000; ++k) {
+      const Eigen::Vector2d p = c(c.front() + (c.back() - c.front()) * k / 2000);
+      curve.x.push_back(p.x()), curve.y.push_back(p.y());
+    }
+    plot.add(std::move(curve));
+  } else {
+    f.title = "Head profile (not converted)";
+    plot.add(meridian_series("profile R(θ)", r.solution.profile, 720, Series::Style::line,
+                             kDesignColor));
   }
-  plot.add(std::move(curve));
   // A stub of the cylinder below each junction, a quarter of the radius long.
-  const double x = r.surfaces.junction_radius, stub = std::min(r.design.length, x / 4);
+  const double x = converted ? converted->surfaces.junction_radius : r.solution.junction_radius;
+  const double stub = std::min(r.design.length, x / 4);
   plot.add({"cylinder", {x, x}, {0.0, -stub}, Series::Style::line, "#444444"});
   plot.add({"", {-x, -x}, {0.0, -stub}, Series::Style::line, "#444444"});
   plot.add_horizontal_line(0.0, "junction plane");

@@ -1,15 +1,17 @@
-// The vessel job's figures: the curvature along the head (targets, achieved, the preset with its
-// curvature jumps, and the residual at each target), the membrane stresses along the meridian with
-// compressive hoop bands marked, and the head profile in the meridian section.
+// The vessel job's figures, built from its stages so that the studio shows them while a solve is
+// converted (or after a conversion failed): the curvature along the head (targets, achieved, the
+// preset with its curvature jumps, and the residual at each target), the membrane stresses along
+// the meridian with compressive hoop bands marked, and the head profile in the meridian section.
 #pragma once
 
-#include "export/svg_plot.h"
+#include "export/figure.h"
 #include "jobs/vessel/vessel_job.h"
 
 namespace polarform {
 
-Figure curvature_figure(const VesselJobResult& r);
-Figure stress_figure(const VesselJobResult& r);
-Figure profile_figure(const VesselJobResult& r);
+Figure curvature_figure(const VesselSolveStage& solved);
+Figure stress_figure(const VesselSolveStage& solved);
+// The NURBS profile with its control polygon when converted, else the synthesised R(θ).
+Figure profile_figure(const VesselSolveStage& solved, const VesselConversionStage* converted);
 
 }  // namespace polarform

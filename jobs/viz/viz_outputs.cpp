@@ -8,6 +8,7 @@
 #include "export/html_report.h"
 #include "export/iges_writer.h"
 #include "export/step_writer.h"
+#include "export/svg_plot.h"
 #include "export/x3d_field_scene.h"
 #include "jobs/viz/viz_plots.h"
 #include "polarform_version.h"
@@ -103,7 +104,7 @@ std::vector<std::string> write_viz_outputs(const VizJobResult& r,
   content["surface.stp"] = stp.str(step);
   content["surface.x3d"] = field_x3d(r.field, title);
   content["control_values.csv"] = control_values_csv(r.field);
-  const std::string preview = viz_preview_figure(r).svg();
+  const std::string preview = svg_document(viz_preview_figure(r));
   content["preview.svg"] = preview;
   content["report.html"] = html_report(r, preview);
   std::vector<std::string> files;

@@ -5,7 +5,7 @@
 // revolution.
 #pragma once
 
-#include "export/svg_plot.h"
+#include "export/figure.h"
 #include "jobs/viz/viz_job.h"
 
 namespace polarform {

@@ -40,32 +40,35 @@ void run(const CamArgs& a) {
   options.bore_diameter = a.bore;
   const std::vector<std::string> files = write_cam_outputs(r, a.out, options);
 
-  for (const std::string& w : r.warnings) std::cerr << "polarform: warning: " << w << "\n";
-  for (const ContinuityIssue& issue : r.continuity)
+  for (const std::string& w : r.conversion.warnings)
+    std::cerr << "polarform: warning: " << w << "\n";
+  for (const ContinuityIssue& issue : r.design.continuity)
     std::cerr << "polarform: motion: " << issue.message() << "\n";
   if (a.quiet) return;
-  const PolarConversion& c = r.conversion;
-  const bool plate = r.plate.has_value();
+  const PolarConversion& c = r.conversion.conversion;
   std::printf("%s cam, %s follower: %zu arcs, degree %d, %d control points\n",
               std::string(cam_type_name(project.cam.type)).c_str(),
               std::string(follower_kind_name(project.cam.follower.kind)).c_str(), c.arcs.size(),
-              plate ? r.profile.degree() : r.track.degree(), plate ? r.profile.size() : r.track.size());
+              r.conversion.degree(), r.conversion.control_points());
   std::printf("tolerance %.3g mm: measured max radial error %.3g mm, max normal error %.3g mm\n",
               c.tolerance, c.max_radial_error, c.max_normal_error);
-  if (r.analysis) {
+  if (const auto* p = std::get_if<PlateCamAnalysis>(&r.analysis.cam)) {
     std::printf("max pressure angle %.2f deg, min radius of curvature %.3f mm, undercut: %s\n",
-                r.analysis->max_pressure_angle.value * kDegreesPerRadian,
-                r.analysis->min_convex_contour_radius.value,
-                r.analysis->undercut.empty() ? "none" : "YES");
+                p->analysis.max_pressure_angle.value * kDegreesPerRadian,
+                p->analysis.min_convex_contour_radius.value,
+                p->analysis.undercut.empty() ? "none" : "YES");
   }
-  if (r.limited)
+  if (const auto* p = std::get_if<PlateProfile>(&r.conversion.profile); p && p->limited)
     std::printf("degree-%d profile: %d control points, measured max radial error %.3g mm\n",
-                r.limited->curve.degree(), r.limited->control_points, r.limited->max_radial_error);
-  for (const GrooveSurface& g : r.groove)
-    std::printf("groove wall %s: degree %d x %d, %d x %d control points, "
-                "measured max error %.3g mm\n",
-                g.side > 0 ? "+z" : "-z", g.surface.degree_u(), g.surface.degree_v(),
-                g.surface.size_u(), g.surface.size_v(), g.max_error);
+                p->limited->curve.degree(), p->limited->control_points,
+                p->limited->max_radial_error);
+  if (const auto* t = std::get_if<CylindricalTrack>(&r.conversion.profile))
+    for (const GrooveSurface& g : t->groove)
+      std::printf(
+          "groove wall %s: degree %d x %d, %d x %d control points, "
+          "measured max error %.3g mm\n",
+          g.side > 0 ? "+z" : "-z", g.surface.degree_u(), g.surface.degree_v(), g.surface.size_u(),
+          g.surface.size_v(), g.max_error);
   std::printf("wrote %zu files to %s (%.0f ms)\n", files.size(),
               std::filesystem::absolute(a.out).string().c_str(), r.seconds * 1e3);
 }

@@ -43,20 +43,21 @@ void run(const VesselArgs& a) {
   options.design_name = std::filesystem::path(a.design).stem().string();
   const std::vector<std::string> files = write_vessel_outputs(r, a.out, options);
 
-  for (const std::string& w : r.solution.warnings) std::cerr << "polarform: vessel: " << w << "\n";
+  for (const std::string& w : r.solved.solution.warnings)
+    std::cerr << "polarform: vessel: " << w << "\n";
   if (a.quiet) return;
   // The figures as the report states them.
   const nlohmann::ordered_json report = vessel_report_json(r, files);
   const auto& synthesis = report["synthesis"];
   const auto& stresses = report["stresses"];
-  const PolarConversion& c = r.conversion;
-  const SynthesisResult& s = r.solution.synthesis;
+  const PolarConversion& c = r.converted.conversion;
+  const SynthesisResult& s = r.solved.solution.synthesis;
   std::printf("synthesis: %zu targets, %d iterations (%s), max |kappa residual| %.3g 1/mm, "
               "max condition violation %.3g\n",
               s.targets.size(), s.iterations, s.termination.c_str(),
               synthesis["max_abs_residual_per_mm"].get<double>(), s.max_violation);
   std::printf("head depth %.3f mm; NURBS profile: %zu arcs, degree %d, %d control points\n",
-              r.solution.depth, c.arcs.size(), c.curve.degree(), c.curve.size());
+              r.solved.solution.depth, c.arcs.size(), c.curve.degree(), c.curve.size());
   std::printf("tolerance %.3g mm: measured max radial error %.3g mm, max normal error %.3g mm\n",
               c.tolerance, c.max_radial_error, c.max_normal_error);
   std::printf("membrane stress: max %.4g MPa; compressive hoop stress: ",

@@ -4,52 +4,47 @@
 
 #include <cmath>
 
+#include "src/number_text.h"
 #include "ui/studio/colors.h"
 #include "ui/studio/widgets.h"
 
 namespace polarform::studio {
 namespace {
 
-void row(const char* name, const char* value, bool bad = false) {
+void row(const char* name, const std::string& value, bool bad = false) {
   ImGui::TableNextColumn();
   ImGui::TextUnformatted(name);
   ImGui::TableNextColumn();
   if (bad) ImGui::PushStyleColor(ImGuiCol_Text, color::error);
-  ImGui::TextUnformatted(value);
+  ImGui::TextUnformatted(value.c_str());
   if (bad) ImGui::PopStyleColor();
 }
 
-std::string at(double value, const char* unit, double theta) {
-  char buffer[96];
-  std::snprintf(buffer, sizeof buffer, "%.4g %s at %.2f°", value, unit, theta * kDegreesPerRadian);
-  return buffer;
+std::string at(const Extremum& e, const char* unit) {
+  return number_text(e.value) + " " + unit + " at " + degrees_text(e.theta);
 }
 
 }  // namespace
 
-void draw_cam_summary(const CamResults& r, const CamViewSettings& view) {
+void draw_cam_summary(const CamDesignStage& d, const CamAnalysisStage& s,
+                      const CamViewSettings& view) {
   if (!ImGui::BeginTable("summary", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp))
     return;
-  char buffer[96];
-  std::snprintf(buffer, sizeof buffer, "%.4g mm", r.program->stroke());
-  row("stroke", buffer);
-  row("max |v|", at(r.extrema.velocity.value, "mm/rad", r.extrema.velocity.theta).c_str());
-  row("max |a|", at(r.extrema.acceleration.value, "mm/rad²", r.extrema.acceleration.theta).c_str());
-  row("max |j|", at(r.extrema.jerk.value, "mm/rad³", r.extrema.jerk.theta).c_str());
-  if (r.analysis) {
-    const CamAnalysis& a = *r.analysis;
-    if (r.design.follower.kind != FollowerKind::FlatFaced) {
-      const double phi = a.max_pressure_angle.value * kDegreesPerRadian;
-      std::snprintf(buffer, sizeof buffer, "%.2f° at %.2f° (limit %.1f°)", phi,
-                    a.max_pressure_angle.theta * kDegreesPerRadian,
-                    view.pressure_angle_limit * kDegreesPerRadian);
-      row("max |pressure angle|", buffer, a.max_pressure_angle.value > view.pressure_angle_limit);
-    }
+  row("stroke", number_text(d.program.stroke()) + " mm");
+  const MotionExtrema& m = s.motion_extrema();
+  row("max |v|", at(m.velocity, "mm/rad"));
+  row("max |a|", at(m.acceleration, "mm/rad²"));
+  row("max |j|", at(m.jerk, "mm/rad³"));
+  if (const auto* plate = std::get_if<PlateCamAnalysis>(&s.cam)) {
+    const CamAnalysis& a = plate->analysis;
+    if (d.project.cam.follower.kind != FollowerKind::FlatFaced)
+      row("max |pressure angle|",
+          degrees_text(a.max_pressure_angle.value) + " at " +
+              degrees_text(a.max_pressure_angle.theta) + " (limit " +
+              degrees_text(view.pressure_angle_limit) + ")",
+          a.max_pressure_angle.value > view.pressure_angle_limit);
     const auto radius = [&](const char* name, const Extremum& e) {
-      if (std::isinf(e.value))
-        row(name, "none");
-      else
-        row(name, at(e.value, "mm", e.theta).c_str());
+      row(name, std::isinf(e.value) ? "none" : at(e, "mm"));
     };
     radius("min convex radius, pitch", a.min_convex_pitch_radius);
     radius("min convex radius, contour", a.min_convex_contour_radius);
@@ -58,23 +53,22 @@ void draw_cam_summary(const CamResults& r, const CamViewSettings& view) {
       row("undercut", "none");
     } else {
       std::string ranges;
-      for (const AngleRange& u : a.undercut) {
-        std::snprintf(buffer, sizeof buffer, "%s%.1f°–%.1f°", ranges.empty() ? "" : ", ",
-                      u.from * kDegreesPerRadian, u.to * kDegreesPerRadian);
-        ranges += buffer;
-      }
-      row("undercut", ranges.c_str(), true);
+      for (const AngleRange& u : a.undercut)
+        ranges += (ranges.empty() ? "" : ", ") + degrees_text(u.from) + "–" + degrees_text(u.to);
+      row("undercut", ranges, true);
     }
-    if (a.face_width) {
-      std::snprintf(buffer, sizeof buffer, "%.4g mm (%.4g … %.4g)", a.face_width->width(),
-                    a.face_width->left, a.face_width->right);
-      row("face width needed", buffer);
-    }
+    if (a.face_width)
+      row("face width needed", number_text(a.face_width->width()) + " mm (" +
+                                   number_text(a.face_width->left) + " … " +
+                                   number_text(a.face_width->right) + ")");
+  } else {
+    const Extremum p = s.max_pressure_angle();
+    row("max |pressure angle| at the pitch radius",
+        degrees_text(p.value) + " at " + degrees_text(p.theta));
   }
-  std::snprintf(buffer, sizeof buffer, "%zu", r.issues.size());
-  row("continuity issues", buffer, !r.issues.empty());
+  row("continuity issues", std::to_string(d.continuity.size()), !d.continuity.empty());
   ImGui::EndTable();
-  for (const ContinuityIssue& issue : r.issues) {
+  for (const ContinuityIssue& issue : d.continuity) {
     ImGui::PushStyleColor(ImGuiCol_Text,
                           issue.derivative <= 2 ? color::error : IM_COL32(170, 110, 0, 255));
     ImGui::Bullet();

@@ -3,11 +3,12 @@
 // face's width, and every continuity issue between segments — red where a limit is broken.
 #pragma once
 
-#include "ui/studio/cam_results.h"
+#include "jobs/cam/cam_job.h"
 #include "ui/studio/cam_view_settings.h"
 
 namespace polarform::studio {
 
-void draw_cam_summary(const CamResults& results, const CamViewSettings& view);
+void draw_cam_summary(const CamDesignStage& design, const CamAnalysisStage& analysis,
+                      const CamViewSettings& view);
 
 }  // namespace polarform::studio

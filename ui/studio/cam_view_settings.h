@@ -3,12 +3,14 @@
 // the units of the motion plots, the profile view's toggles and the follower's animation angle.
 #pragma once
 
+#include "src/units.h"
+
 namespace polarform::studio {
 
 enum class MotionUnits { per_radian, time };
 
 struct CamViewSettings {
-  double pressure_angle_limit = 30.0 * 3.14159265358979323846 / 180.0;  // rad
+  double pressure_angle_limit = 30.0 * kRadiansPerDegree;  // rad
   MotionUnits units = MotionUnits::per_radian;
   bool show_pitch = true;
   bool show_base_circle = true;

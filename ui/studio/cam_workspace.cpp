@@ -7,6 +7,10 @@
 #include <numbers>
 #include <sstream>
 
+#include "jobs/cam/cam_report.h"
+#include "jobs/report/report_lines.h"
+#include "src/number_text.h"
+#include "src/units.h"
 #include "ui/studio/cam_summary_panel.h"
 #include "ui/studio/colors.h"
 #include "ui/studio/guarded.h"
@@ -28,7 +32,8 @@ bool CamWorkspace::open(const std::filesystem::path& file, bool as_template) {
                       as_template ? file.stem().string() + " (new)" : file.filename().string());
     has_document_ = true;
     computed_.reset();
-    results_.reset();
+    design_.reset();
+    analysis_.reset();
     conversion_.reset();
     design_error_.clear();
     conversion_error_.clear();
@@ -52,37 +57,49 @@ void CamWorkspace::update() {
   recompute();
 }
 
+// The stages the studio runs live: the analyses and the conversion of the CLI's job, the error
+// curve at fewer samples and without the degree-limited extra (the export runs the whole job).
+CamJobOptions CamWorkspace::live_options() {
+  CamJobOptions options;
+  options.error_samples = 720;
+  options.with_limited = false;
+  return options;
+}
+
 void CamWorkspace::recompute() {
   const auto start = std::chrono::steady_clock::now();
   const CamProject& current = document_.current();
   // Messages go to the log once an edit has settled, not for every frame of a drag.
   const bool settled = !ImGui::IsAnyItemActive();
-  if (!computed_ || !(computed_->cam == current.cam)) {
-    try {
-      results_ = compute_cam_results(current.cam);
-      design_error_.clear();
-      results_stale_ = false;
-    } catch (...) {
-      const std::string message = failure_text("Cam design", std::current_exception());
-      if (settled && message != design_error_) log().error(message);
-      design_error_ = message;
-      results_stale_ = true;
-    }
+  const auto report = [&](const std::string& what, std::string& last) {
+    const std::string message = failure_text(what, std::current_exception());
+    if (settled && message != last) log().error(message);
+    last = message;
+  };
+  const bool design_changed = !computed_ || !(computed_->cam == current.cam);
+  try {
+    CamDesignStage design = design_cam(current);
+    if (design_changed || !analysis_) analysis_ = analyse_cam(design, live_options());
+    design_ = std::move(design);
+    design_error_.clear();
+    design_stale_ = false;
+  } catch (...) {
+    report("Cam design", design_error_);
+    design_stale_ = true;
   }
-  if (!results_stale_ && results_) {
+  if (!design_stale_) {
     try {
-      conversion_ = convert_cam(*results_, current);
+      conversion_ = convert_cam(*design_, live_options());
       conversion_error_.clear();
       conversion_stale_ = false;
     } catch (...) {
-      const std::string message = failure_text("NURBS conversion", std::current_exception());
-      if (settled && message != conversion_error_) log().error(message);
-      conversion_error_ = message;
+      report("NURBS conversion", conversion_error_);
       conversion_stale_ = true;
     }
   } else {
     conversion_stale_ = true;
   }
+  ++revision_;
   computed_ = current;
   compute_ms_ =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -114,7 +131,7 @@ void CamWorkspace::draw() {
   ImGui::BeginChild("cam results", ImVec2(0, avail.y), false,
                     ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
   draw_banner();
-  if (results_) {
+  if (design_ && analysis_) {
     const ImVec2 rest = ImGui::GetContentRegionAvail();
     float& middle_fraction = layout("cam.middle", 0.45f);
     const float middle = split_size(middle_fraction, rest.x, min_width);
@@ -140,8 +157,8 @@ void CamWorkspace::draw_banner() {
   ImGui::TextWrapped("%s", design_error_.c_str());
   ImGui::PopStyleColor();
   ImGui::TextDisabled(
-      results_ ? "The plots show the last valid design; undo (Ctrl+Z) or fix the value above."
-               : "Fix the design on the left, or undo (Ctrl+Z).");
+      design_ ? "The plots show the last valid design; undo (Ctrl+Z) or fix the value above."
+              : "Fix the design on the left, or undo (Ctrl+Z).");
 }
 
 void CamWorkspace::draw_editor() {
@@ -173,19 +190,20 @@ void CamWorkspace::draw_editor() {
         "Profile files of a higher exact degree are then approximated at this degree within the "
         "tolerance "
         "and the measured error is reported (DESIGN §4.6).");
-    conversion_panel_.draw_result(conversion_ ? &*conversion_ : nullptr, conversion_error_,
-                                  conversion_stale_);
+    conversion_panel_.draw_result(
+        conversion_ ? &conversion_->conversion : nullptr, conversion_ ? conversion_->degree() : 0,
+        conversion_ ? conversion_->control_points() : 0, conversion_error_, conversion_stale_);
   }
-  if (results_ && ImGui::CollapsingHeader("Analysis", ImGuiTreeNodeFlags_DefaultOpen)) {
-    if (results_stale_) ImGui::TextDisabled("(last valid design)");
-    draw_cam_summary(*results_, view_);
+  if (design_ && analysis_ && ImGui::CollapsingHeader("Analysis", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (design_stale_) ImGui::TextDisabled("(last valid design)");
+    draw_cam_summary(*design_, *analysis_, view_);
   }
   ImGui::TextDisabled("recomputed in %.2f ms", compute_ms_);
 }
 
 void CamWorkspace::draw_plots() {
   std::vector<SegmentSpec>& segments = document_.edit().cam.segments;
-  svaj_.draw(*results_, view_, segments, ImGui::GetContentRegionAvail());
+  svaj_.draw(*design_, *analysis_, revision_, view_, segments, ImGui::GetContentRegionAvail());
 }
 
 void CamWorkspace::draw_profile_and_conversion() {
@@ -194,16 +212,16 @@ void CamWorkspace::draw_profile_and_conversion() {
   const float top = split_size(fraction, avail.y, ImGui::GetFontSize() * 8);
   ImGui::BeginChild("profile", ImVec2(0, top), false,
                     ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
-  const NurbsCurve2d* curve = conversion_ && results_->plate && !conversion_stale_
-                                  ? &conversion_->conversion.curve
+  const PlateProfile* plate = conversion_ && !conversion_stale_
+                                  ? std::get_if<PlateProfile>(&conversion_->profile)
                                   : nullptr;
-  profile_.draw(*results_, curve, view_);
+  profile_.draw(*design_, *analysis_, plate ? &plate->curve : nullptr, view_);
   ImGui::EndChild();
   horizontal_splitter("profile split", fraction, avail.y);
   ImGui::BeginChild("conversion error", ImVec2(0, 0), false,
                     ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
   if (conversion_)
-    conversion_panel_.draw_error_plot(*conversion_, ImGui::GetContentRegionAvail());
+    conversion_panel_.draw_error_plot(*conversion_, revision_, ImGui::GetContentRegionAvail());
   else
     ImGui::TextDisabled("No conversion: %s", conversion_error_.c_str());
   ImGui::EndChild();
@@ -222,23 +240,18 @@ void CamWorkspace::bench_step(int frame, int frames) {
 
 std::string CamWorkspace::numbers() const {
   std::ostringstream out;
-  out.precision(10);
   const CamProject& edit = document_.current();
   out << "segments=" << edit.cam.segments.size()
-      << "\nvalid=" << (design_error_.empty() && results_ ? 1 : 0) << "\n";
+      << "\nvalid=" << (design_error_.empty() && design_ ? 1 : 0) << "\n";
   for (std::size_t k = 1; k < edit.cam.segments.size(); ++k)
-    out << "boundary_" << k << "_deg=" << edit.cam.segments[k].start * kDegreesPerRadian << "\n";
-  if (results_ && design_error_.empty()) {
-    out << "stroke_mm=" << results_->program->stroke() << "\n";
-    if (results_->analysis) {
-      out << "max_pressure_angle_deg="
-          << results_->analysis->max_pressure_angle.value * kDegreesPerRadian << "\n";
-      out << "min_convex_contour_radius_mm=" << results_->analysis->min_convex_contour_radius.value
-          << "\n";
-    }
-    out << "continuity_issues=" << results_->issues.size() << "\n";
+    out << "boundary_" << k
+        << "_deg=" << format_round_trip(edit.cam.segments[k].start * kDegreesPerRadian) << "\n";
+  if (design_ && analysis_ && design_error_.empty()) {
+    out << "stroke_mm=" << format_round_trip(design_->program.stroke()) << "\n";
+    // The fields of report.json for the stages shown, from the job's own report builder.
+    out << report_lines(cam_report_fields(
+        *design_, *analysis_, conversion_ && !conversion_stale_ ? &*conversion_ : nullptr));
   }
-  if (conversion_ && !conversion_stale_) out << conversion_->summary.numbers();
   out << "compute_ms=" << compute_ms_ << "\n";
   return out.str();
 }

@@ -1,16 +1,16 @@
 // The cam workspace, the heart of the app: the segment table, follower and cam settings and the
 // conversion settings on the left; live SVAJ and pressure-angle plots, the profile view with the
-// follower, and the conversion result with its measured error on the right. Every edit recomputes
-// the analyses at once (the design is small); undo/redo, save and export work on the project.
+// follower, and the conversion result with its measured error on the right. Every edit runs the
+// cam job's stages again at once (the design is small): design and analyses, then the conversion;
+// undo/redo, save and export (the job's output bundle) work on the project.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
-#include "designers/cam/cam_design.h"
+#include "jobs/cam/cam_job.h"
 #include "jobs/project/cam_project.h"
-#include "ui/studio/cam_conversion.h"
-#include "ui/studio/cam_results.h"
 #include "ui/studio/cam_settings_panel.h"
 #include "ui/studio/cam_view_settings.h"
 #include "ui/studio/conversion_panel.h"
@@ -59,6 +59,7 @@ class CamWorkspace : public Workspace {
   bool has_document() const { return has_document_; }
 
  private:
+  static CamJobOptions live_options();
   void recompute();
   void draw_editor();
   void draw_plots();
@@ -67,11 +68,14 @@ class CamWorkspace : public Workspace {
 
   ProjectDocument<CamProject> document_;
   bool has_document_ = false;
-  std::optional<CamProject> computed_;  // the input of results_ / the last attempt
-  std::optional<CamResults> results_;   // the last valid design
-  std::optional<CamConversion> conversion_;
+  std::optional<CamProject> computed_;  // the input of the stages / the last attempt
+  // The cam job's stages of the last valid design (design and analyses) and conversion.
+  std::optional<CamDesignStage> design_;
+  std::optional<CamAnalysisStage> analysis_;
+  std::optional<CamConversionStage> conversion_;
+  std::uint64_t revision_ = 0;  // counts the recomputed stages (the figures follow it)
   std::string design_error_, conversion_error_;
-  bool results_stale_ = false, conversion_stale_ = false;
+  bool design_stale_ = false, conversion_stale_ = false;
   double compute_ms_ = 0.0;
   double animation_clock_ = -1.0;
   SegmentTable segment_table_;

@@ -1,6 +1,7 @@
 // The app's colours: the plot palette of export/plot_style (Okabe & Ito, colour-blind safe) as
-// ImGui colours, the fixed roles (error, boundary, grid), and the colour maps for scalar fields —
-// a sequential map for magnitudes (pressure angle) and a diverging one for signed deviations.
+// ImGui colours, the fixed roles (error, boundary, grid), and the colour maps of export/colormap —
+// the sequential map for magnitudes (pressure angle) and the diverging one for signed deviations —
+// as ImGui and float colours, so the app and the exported files colour alike.
 #pragma once
 
 #include <cstdint>
@@ -11,7 +12,7 @@ namespace polarform::studio {
 
 // Palette colour k (cycles), opaque or with alpha in [0, 1].
 ImU32 palette_color(int k, float alpha = 1.0f);
-// "#rrggbb" to an ImGui colour (grey for malformed text).
+// "#rrggbb" or "#rgb" to an ImGui colour (grey for malformed text).
 ImU32 hex_color(const char* text, float alpha = 1.0f);
 
 namespace color {

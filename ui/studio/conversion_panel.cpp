@@ -1,22 +1,23 @@
 #include "ui/studio/conversion_panel.h"
 
 #include <array>
-#include <cmath>
-#include <numbers>
 #include <string_view>
 
+#include "jobs/cam/cam_plots.h"
+#include "src/number_text.h"
+#include "src/units.h"
 #include "ui/studio/colors.h"
 #include "ui/studio/widgets.h"
 
 namespace polarform::studio {
 namespace {
 
-void row(const char* name, const char* value, ImU32 colour = 0) {
+void row(const char* name, const std::string& value, ImU32 colour = 0) {
   ImGui::TableNextColumn();
   ImGui::TextUnformatted(name);
   ImGui::TableNextColumn();
   if (colour) ImGui::PushStyleColor(ImGuiCol_Text, colour);
-  ImGui::TextUnformatted(value);
+  ImGui::TextUnformatted(value.c_str());
   if (colour) ImGui::PopStyleColor();
 }
 
@@ -53,7 +54,8 @@ bool ConversionPanel::draw_settings(ConversionOptions& o) {
   return changed;
 }
 
-void ConversionPanel::draw_result(const CamConversion* c, const std::string& error, bool stale) {
+void ConversionPanel::draw_result(const PolarConversion* c, int degree, int control_points,
+                                  const std::string& error, bool stale) {
   if (!error.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, color::error);
     ImGui::TextWrapped("%s", error.c_str());
@@ -61,48 +63,32 @@ void ConversionPanel::draw_result(const CamConversion* c, const std::string& err
   }
   if (!c) return;
   if (stale) ImGui::TextDisabled("(result of an earlier design)");
-  const ConversionSummary& s = c->summary;
   if (!ImGui::BeginTable("conversion", 2,
                          ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp))
     return;
-  char buffer[128];
-  std::snprintf(buffer, sizeof buffer, "%d", s.arcs);
-  row("arcs", buffer);
-  std::snprintf(buffer, sizeof buffer, "%d (%s)", s.degree, s.rational ? "rational" : "polynomial");
-  row("degree", buffer);
-  std::snprintf(buffer, sizeof buffer, "%d", s.control_points);
-  row("control points", buffer);
-  std::snprintf(buffer, sizeof buffer, "%.4g µm (tolerance %.4g µm)", s.max_radial_error * 1e3,
-                s.tolerance * 1e3);
-  row("max radial error", buffer, s.max_radial_error <= s.tolerance ? color::ok : color::error);
-  std::snprintf(buffer, sizeof buffer, "%.4g µm", s.max_normal_error * 1e3);
-  row("max normal error", buffer);
-  std::snprintf(buffer, sizeof buffer, "%.2f°",
-                std::remainder(s.worst_angle, 2 * std::numbers::pi) * kDegreesPerRadian);
-  row("worst at polar angle", buffer);
-  std::snprintf(buffer, sizeof buffer, "%.3g rad", s.max_tangent_jump);
-  row("tangent jump at junctions", buffer);
-  std::snprintf(buffer, sizeof buffer, "%s%.3g µm / %.3g µm", s.function_exact ? "exact, " : "",
-                s.function_error * 1e3, s.synchronization_error * 1e3);
-  row("error budget F / arcs", buffer);
+  const auto um = [](double mm) { return number_text(to_micrometres(mm)) + " µm"; };
+  row("arcs", std::to_string(c->arcs.size()));
+  row("degree",
+      std::to_string(degree) + (c->curve.is_rational() ? " (rational)" : " (polynomial)"));
+  row("control points", std::to_string(control_points));
+  row("max radial error", um(c->max_radial_error) + " (tolerance " + um(c->tolerance) + ")",
+      c->max_radial_error <= c->tolerance ? color::ok : color::error);
+  row("max normal error", um(c->max_normal_error));
+  row("worst at polar angle", number_text(degrees_in_turn(c->worst_angle)) + "°");
+  row("tangent jump at junctions", degrees_text(c->max_tangent_jump));
+  row("error budget F / arcs", (c->function_exact ? "exact, " : "") + um(c->function_error) +
+                                   " / " + um(c->synchronization_error));
   ImGui::EndTable();
 }
 
-void ConversionPanel::draw_error_plot(const CamConversion& c, ImVec2 size) {
-  ImGui::Checkbox("log scale", &log_scale_);
-  PlotSpec spec;
-  spec.id = "conversion error";
-  spec.title = "measured radial error of the NURBS profile";
-  spec.y_label = "|ρ − R(ψ)| [µm]";
-  spec.x_label = "polar angle ψ [°]";
-  spec.log_y = log_scale_;
-  spec.x_extent = AxisRange{0.0, 360.0};
-  spec.lines.push_back({"radial error", c.error_angle_deg, c.error_um, palette_color(2), 2.0f});
-  spec.levels.push_back({c.summary.tolerance * 1e3, "tolerance", color::error});
-  for (double j : c.junctions_deg)
-    spec.markers.push_back({j, "arc junction", IM_COL32(150, 150, 150, 110), false});
+void ConversionPanel::draw_error_plot(const CamConversionStage& c, std::uint64_t revision,
+                                      ImVec2 size) {
+  if (ImGui::Checkbox("log scale", &log_scale_) || !figure_ || figure_revision_ != revision) {
+    figure_ = conversion_error_figure(c, log_scale_);
+    figure_revision_ = revision;
+  }
   size.y -= ImGui::GetFrameHeightWithSpacing();
-  draw_plot(spec, x_view_, y_view_, size);
+  draw_figure("conversion error", *figure_, view_, size);
 }
 
 }  // namespace polarform::studio

@@ -30,13 +30,12 @@ std::vector<ImVec2> simplified(const Polyline& points) {
   return line;
 }
 
-// Angle `a` shifted by whole turns to lie within π of `near`.
-double unwrapped(double a, double near) { return a + 2 * kPi * std::round((near - a) / (2 * kPi)); }
-
 }  // namespace
 
-void ProfileView::draw(const CamResults& r, const NurbsCurve2d* converted, CamViewSettings& view) {
-  draw_toolbar(view, r.plate.has_value());
+void ProfileView::draw(const CamDesignStage& d, const CamAnalysisStage& a,
+                       const NurbsCurve2d* converted, CamViewSettings& view) {
+  const PlateCam* plate = std::get_if<PlateCam>(&d.cam);
+  draw_toolbar(view, plate != nullptr);
   const ImVec2 min = ImGui::GetCursorScreenPos();
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   const ImVec2 canvas(std::max(avail.x, 100.0f), std::max(avail.y, 100.0f));
@@ -46,10 +45,10 @@ void ProfileView::draw(const CamResults& r, const NurbsCurve2d* converted, CamVi
   ImDrawList* dl = ImGui::GetWindowDrawList();
   add_opaque_rect(dl, min, max, color::background);
   dl->PushClipRect(min, max, true);
-  if (r.plate)
-    draw_plate(r, converted, view, min, max);
-  else if (r.barrel)
-    draw_barrel(r, view, min, max);
+  if (plate)
+    draw_plate(*plate, a, converted, view, min, max);
+  else
+    draw_barrel(std::get<BarrelCam>(d.cam), a, view, min, max);
   dl->PopClipRect();
   dl->AddRect(min, max, color::frame);
 }
@@ -83,10 +82,12 @@ void ProfileView::draw_toolbar(CamViewSettings& view, bool plate) {
   }
 }
 
-void ProfileView::draw_plate(const CamResults& r, const NurbsCurve2d* converted,
-                             const CamViewSettings& view, ImVec2 min, ImVec2 max) {
-  const PlateCam& cam = *r.plate;
-  const ProfileCurves& p = r.profile;
+void ProfileView::draw_plate(const PlateCam& cam, const CamAnalysisStage& a,
+                             const NurbsCurve2d* converted, const CamViewSettings& view, ImVec2 min,
+                             ImVec2 max) {
+  const PlateCamAnalysis& plate = std::get<PlateCamAnalysis>(a.cam);
+  const PlateCurves& p = plate.curves;
+  const std::vector<double>& pressure = a.curves.pressure_angle;
   rotation_ = view.cam_turns ? cam.sense() * view.follower_angle : 0.0;
   double extent = cam.base_radius();
   for (const auto& q : p.pitch) extent = std::max(extent, q.norm());
@@ -132,7 +133,7 @@ void ProfileView::draw_plate(const CamResults& r, const NurbsCurve2d* converted,
   const bool coloured = view.show_pressure_colour && cam.follower().kind != FollowerKind::FlatFaced;
   const auto shade = [&](std::size_t i) {
     if (!coloured) return color::text;
-    const double t = std::abs(p.pressure[i]) / limit;
+    const double t = std::abs(pressure[i]) / limit;
     return t > 1.0 ? color::error
                    : sequential_color((std::floor(t * kLegendSteps) + 0.5) / kLegendSteps);
   };
@@ -156,15 +157,14 @@ void ProfileView::draw_plate(const CamResults& r, const NurbsCurve2d* converted,
     for (const ImVec2& q : line)
       dl->AddRectFilled(ImVec2(q.x - 2, q.y - 2), ImVec2(q.x + 2, q.y + 2), palette_color(1));
   }
-  if (view.show_follower) draw_follower(r, view, dl);
+  if (view.show_follower) draw_follower(cam, plate.analysis, view, dl);
   if (view.show_pressure_colour && cam.follower().kind != FollowerKind::FlatFaced)
     draw_legend(view, min, dl);
-  if (ImGui::IsItemHovered()) hover_readout(r, view);
+  if (ImGui::IsItemHovered()) hover_readout(cam, a, view);
 }
 
-void ProfileView::draw_follower(const CamResults& r, const CamViewSettings& view,
-                                ImDrawList* dl) const {
-  const PlateCam& cam = *r.plate;
+void ProfileView::draw_follower(const PlateCam& cam, const CamAnalysis& analysis,
+                                const CamViewSettings& view, ImDrawList* dl) const {
   const double theta = view.follower_angle;
   Eigen::Vector2d pitch[1], contact[1];
   cam.pitch(theta, 0, pitch);
@@ -200,9 +200,9 @@ void ProfileView::draw_follower(const CamResults& r, const CamViewSettings& view
     }
     case FollowerKind::FlatFaced: {
       double left = -0.5 * rb, right = 0.5 * rb;
-      if (r.analysis && r.analysis->face_width) {
-        left = std::min(left, r.analysis->face_width->left * 1.1);
-        right = std::max(right, r.analysis->face_width->right * 1.1);
+      if (analysis.face_width) {
+        left = std::min(left, analysis.face_width->left * 1.1);
+        right = std::max(right, analysis.face_width->right * 1.1);
       }
       const Eigen::Vector2d a = P - side * left, b = P - side * right;  // side points to -x
       dl->AddQuadFilled(at(a), at(a + dir * (0.06 * rb)), at(b + dir * (0.06 * rb)), at(b), fill);
@@ -230,9 +230,10 @@ void ProfileView::draw_legend(const CamViewSettings& view, ImVec2 min, ImDrawLis
   dl->AddText(ImVec2(o.x, o.y + h + 2), color::text, text.c_str());
 }
 
-void ProfileView::hover_readout(const CamResults& r, const CamViewSettings& view) const {
+void ProfileView::hover_readout(const PlateCam& cam, const CamAnalysisStage& a,
+                                const CamViewSettings& view) const {
   const ImVec2 mouse = ImGui::GetIO().MousePos;
-  const ProfileCurves& p = r.profile;
+  const PlateCurves& p = std::get<PlateCamAnalysis>(a.cam).curves;
   std::size_t best = p.contour.size();
   float best_d = ImGui::GetFontSize();
   for (std::size_t i = 0; i < p.contour.size(); ++i) {
@@ -250,10 +251,11 @@ void ProfileView::hover_readout(const CamResults& r, const CamViewSettings& view
   }
   const double k = p.curvature[best];
   ImGui::BeginTooltip();
-  ImGui::Text("cam angle θ = %.2f°", p.theta[best] * kDegreesPerRadian);
+  ImGui::Text("cam angle θ = %.2f°", a.curves.theta[best] * kDegreesPerRadian);
   ImGui::Text("radius R = %.4f mm", p.contour[best].norm());
-  if (r.plate->follower().kind != FollowerKind::FlatFaced)
-    ImGui::Text("pressure angle = %.2f° (limit %.1f°)", p.pressure[best] * kDegreesPerRadian,
+  if (cam.follower().kind != FollowerKind::FlatFaced)
+    ImGui::Text("pressure angle = %.2f° (limit %.1f°)",
+                a.curves.pressure_angle[best] * kDegreesPerRadian,
                 view.pressure_angle_limit * kDegreesPerRadian);
   if (k != 0.0)
     ImGui::Text("radius of curvature = %.4g mm (%s)", 1.0 / std::abs(k),
@@ -263,11 +265,10 @@ void ProfileView::hover_readout(const CamResults& r, const CamViewSettings& view
   ImGui::EndTooltip();
 }
 
-void ProfileView::draw_barrel(const CamResults& r, const CamViewSettings& view, ImVec2 min,
-                              ImVec2 max) {
-  const BarrelCam& cam = *r.barrel;
+void ProfileView::draw_barrel(const BarrelCam& cam, const CamAnalysisStage& a,
+                              const CamViewSettings& view, ImVec2 min, ImVec2 max) {
   const double rc = cam.pitch_radius(), rr = cam.roller_radius();
-  const MotionCurves& m = r.motion;
+  const MotionCurves& m = a.curves;
   double lo = 1e300, hi = -1e300;
   for (double s : m.s) {
     lo = std::min(lo, cam.z0() + s);
@@ -277,20 +278,13 @@ void ProfileView::draw_barrel(const CamResults& r, const CamViewSettings& view, 
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const auto at = [&](double x, double z) { return view2d_.to_screen(x, z); };
   std::vector<ImVec2> centre;
-  for (std::size_t i = 0; i < m.theta_deg.size(); ++i)
-    centre.push_back(at(rc * m.theta_deg[i] * kRadiansPerDegree, cam.z0() + m.s[i]));
+  for (std::size_t i = 0; i < m.theta.size(); ++i)
+    centre.push_back(at(rc * m.theta[i], cam.z0() + m.s[i]));
   dl->AddPolyline(centre.data(), static_cast<int>(centre.size()), palette_color(0, 0.6f), 0, 1.0f);
-  // Groove walls at the pitch radius from the library's exact roller envelope, developed onto
-  // the pitch cylinder (x = Rc · cam angle).
-  for (int side : {-1, 1}) {
+  // The groove walls at the pitch radius, developed onto the pitch cylinder (x = Rc · cam angle).
+  for (const auto& developed : std::get<CylindricalCamAnalysis>(a.cam).developed_walls) {
     std::vector<ImVec2> wall;
-    for (std::size_t i = 0; i < m.theta_deg.size(); i += 2) {
-      const double theta = m.theta_deg[i] * kRadiansPerDegree;
-      const Eigen::Vector3d w = cam.groove_wall_point(theta, rc, side);
-      const double phi = std::atan2(w.y(), w.x());
-      const double t = unwrapped(sense(cam.rotation()) * (kPi / 2 - phi), theta);
-      wall.push_back(at(rc * t, w.z()));
-    }
+    for (const Eigen::Vector2d& w : developed) wall.push_back(at(w.x(), w.y()));
     dl->AddPolyline(wall.data(), static_cast<int>(wall.size()), color::text, 0, 2.0f);
   }
   const double theta = view.follower_angle;

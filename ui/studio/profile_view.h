@@ -6,8 +6,8 @@
 
 #include <imgui.h>
 
+#include "jobs/cam/cam_job.h"
 #include "src/nurbs/nurbs_curve.h"
-#include "ui/studio/cam_results.h"
 #include "ui/studio/cam_view_settings.h"
 #include "ui/studio/view_2d.h"
 
@@ -17,16 +17,20 @@ class ProfileView {
  public:
   // Fills the remaining content region. `converted` (may be null) is the NURBS profile whose
   // control polygon can be shown.
-  void draw(const CamResults& results, const NurbsCurve2d* converted, CamViewSettings& view);
+  void draw(const CamDesignStage& design, const CamAnalysisStage& analysis,
+            const NurbsCurve2d* converted, CamViewSettings& view);
 
  private:
   void draw_toolbar(CamViewSettings& view, bool plate);
-  void draw_plate(const CamResults& r, const NurbsCurve2d* converted, const CamViewSettings& view,
-                  ImVec2 min, ImVec2 max);
-  void draw_barrel(const CamResults& r, const CamViewSettings& view, ImVec2 min, ImVec2 max);
-  void draw_follower(const CamResults& r, const CamViewSettings& view, ImDrawList* dl) const;
+  void draw_plate(const PlateCam& cam, const CamAnalysisStage& a, const NurbsCurve2d* converted,
+                  const CamViewSettings& view, ImVec2 min, ImVec2 max);
+  void draw_barrel(const BarrelCam& cam, const CamAnalysisStage& a, const CamViewSettings& view,
+                   ImVec2 min, ImVec2 max);
+  void draw_follower(const PlateCam& cam, const CamAnalysis& analysis, const CamViewSettings& view,
+                     ImDrawList* dl) const;
   void draw_legend(const CamViewSettings& view, ImVec2 min, ImDrawList* dl) const;
-  void hover_readout(const CamResults& r, const CamViewSettings& view) const;
+  void hover_readout(const PlateCam& cam, const CamAnalysisStage& a,
+                     const CamViewSettings& view) const;
 
   View2d view2d_;
   double rotation_ = 0.0;  // display rotation of cam-frame geometry this frame, rad

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "jobs/study/study_plots.h"
 #include "src/number_text.h"
 #include "ui/studio/colors.h"
 #include "ui/studio/guarded.h"
@@ -12,29 +13,6 @@
 #include "ui/studio/widgets.h"
 
 namespace polarform::studio {
-namespace {
-
-struct StudyColumns {  // ascending tolerance, as the plots need
-  std::vector<double> tolerance, quartic, rqb, cubic, quartic_arcs, rqb_arcs;
-};
-
-StudyColumns columns(const StudyJobResult& r) {
-  std::vector<StudyRow> rows = r.rows;
-  std::sort(rows.begin(), rows.end(),
-            [](const StudyRow& a, const StudyRow& b) { return a.tolerance < b.tolerance; });
-  StudyColumns c;
-  for (const StudyRow& row : rows) {
-    c.tolerance.push_back(row.tolerance);
-    c.quartic.push_back(row.quartic.control_points);
-    c.rqb.push_back(row.rqb.control_points);
-    c.cubic.push_back(row.cubic.control_points);
-    c.quartic_arcs.push_back(row.quartic.arcs);
-    c.rqb_arcs.push_back(row.rqb.arcs);
-  }
-  return c;
-}
-
-}  // namespace
 
 StudyWorkspace::StudyWorkspace(StudioContext& context, const CamWorkspace& cam)
     : Workspace(context), cam_(cam) {}
@@ -55,6 +33,7 @@ void StudyWorkspace::update() {
     if (outcome->value) {
       result_ = std::move(*outcome->value);
       result_input_ = input_;
+      figures_.reset();
       log().info("Study: " + std::to_string(result_->rows.size()) + " tolerances in " +
                  number_text(outcome->seconds) + " s");
     } else if (outcome->error) {
@@ -154,52 +133,11 @@ void StudyWorkspace::draw_plots(ImVec2 size) {
     ImGui::TextDisabled(task_.busy() ? "Running the study…" : "No study yet.");
     return;
   }
-  const StudyColumns c = columns(*result_);
-  std::vector<double> angle, rqb, minimax, printed;
-  for (const DeviationRow& d : result_->deviation) {
-    angle.push_back(d.arc_angle * kDegreesPerRadian);
-    rqb.push_back(d.rqb);
-    minimax.push_back(d.quartic_minimax);
-    printed.push_back(d.quartic_printed);
-  }
-  const float height = size.y / 3 - ImGui::GetStyle().ItemSpacing.y;
-  PlotSpec points;
-  points.id = "study control points";
-  points.title = "control points of the NURBS profile";
-  points.x_label = "tolerance ε [mm]";
-  points.y_label = "control points";
-  points.log_x = points.log_y = true;
-  points.lines.push_back(
-      {"quasi-uniform quartic base", c.tolerance, c.quartic, palette_color(0), 2.0f});
-  points.lines.push_back({"RQB base", c.tolerance, c.rqb, palette_color(1), 2.0f});
-  points.lines.push_back(
-      {"cubic through sampled points", c.tolerance, c.cubic, color::muted, 2.0f});
-  for (std::size_t i = 0; i < c.tolerance.size(); ++i)
-    for (const auto* y : {&c.quartic, &c.rqb, &c.cubic})
-      points.points.push_back({c.tolerance[i], (*y)[i], "", 0, true});
-  draw_plot(points, x_views_[0], y_views_[0], ImVec2(size.x, height));
-
-  PlotSpec arcs;
-  arcs.id = "study arcs";
-  arcs.title = "base-circle arcs";
-  arcs.x_label = "tolerance ε [mm]";
-  arcs.y_label = "arcs";
-  arcs.log_x = arcs.log_y = true;
-  arcs.lines.push_back(
-      {"quasi-uniform quartic", c.tolerance, c.quartic_arcs, palette_color(0), 2.0f});
-  arcs.lines.push_back({"RQB", c.tolerance, c.rqb_arcs, palette_color(1), 2.0f});
-  draw_plot(arcs, x_views_[1], y_views_[1], ImVec2(size.x, height));
-
-  PlotSpec deviation;
-  deviation.id = "study deviation";
-  deviation.title = "max angle deviation of one base arc (Bae 2002, Fig. 5.4)";
-  deviation.x_label = "arc angle 2φ [°]";
-  deviation.y_label = "max |ξ(η) − 2φη| [rad]";
-  deviation.log_x = deviation.log_y = true;
-  deviation.lines.push_back({"RQB arc", angle, rqb, palette_color(1), 2.0f});
-  deviation.lines.push_back({"quartic, minimax α", angle, minimax, palette_color(0), 2.0f});
-  deviation.lines.push_back({"quartic, printed α", angle, printed, palette_color(4), 1.0f});
-  draw_plot(deviation, x_views_[2], y_views_[2], ImVec2(size.x, height));
+  if (!figures_)
+    figures_ = {study_figure(*result_, cam_.document_name()), deviation_figure(*result_)};
+  const float spacing = ImGui::GetStyle().ItemSpacing.y;
+  draw_figure("study", figures_->first, views_[0], ImVec2(size.x, size.y * 0.62f - spacing));
+  draw_figure("deviation", figures_->second, views_[1], ImVec2(size.x, size.y * 0.38f - spacing));
 }
 
 std::vector<ExportChoice> StudyWorkspace::export_choices() const {

@@ -51,7 +51,8 @@ class StudyWorkspace : public Workspace {
   std::optional<StudyJobResult> result_;
   std::optional<CamProject> result_input_;
   std::string error_;
-  AxisView x_views_[3], y_views_[3];
+  std::optional<std::pair<Figure, Figure>> figures_;  // the job's study and deviation figures
+  FigureView views_[2];
 };
 
 }  // namespace polarform::studio

@@ -6,10 +6,13 @@
 #include <cmath>
 #include <sstream>
 
-#include "export/iges_writer.h"
-#include "export/step_writer.h"
-#include "export/x3d_writer.h"
+#include "export/atomic_file.h"
+#include "jobs/report/report_lines.h"
 #include "jobs/vessel/vessel_outputs.h"
+#include "jobs/vessel/vessel_plots.h"
+#include "jobs/vessel/vessel_report.h"
+#include "src/number_text.h"
+#include "src/units.h"
 #include "ui/studio/colors.h"
 #include "ui/studio/document_kind.h"
 #include "ui/studio/guarded.h"
@@ -22,6 +25,29 @@ namespace {
 
 constexpr float kSurfaceRgb[3] = {0.62f, 0.68f, 0.78f};
 constexpr float kHeadRgb[3] = {0.85f, 0.62f, 0.38f};
+
+// The vessel job's stages for the edited project: the solve, then the conversion — whose failure
+// is kept as a message, so the solve still shows — with the report's fields and the figures.
+VesselRun run_stages(const VesselProject& project) {
+  VesselRun run{solve_vessel_head(project), std::nullopt, {}, {}, Figure(), Figure(), Figure()};
+  try {
+    run.converted = convert_vessel_head(run.solved);
+  } catch (...) {
+    run.conversion_error = failure_text("conversion", std::current_exception());
+  }
+  const VesselConversionStage* converted = run.converted ? &*run.converted : nullptr;
+  run.fields = vessel_report_fields(run.solved, converted);
+  run.meridian = profile_figure(run.solved, converted);
+  run.curvature = curvature_figure(run.solved);
+  run.stresses = stress_figure(run.solved);
+  return run;
+}
+
+// A number of the report's fields, as text.
+std::string field(const nlohmann::ordered_json& fields, const char* group, const char* name) {
+  const auto& v = fields.at(group).at(name);
+  return v.is_number() ? number_text(v.get<double>()) : v.dump();
+}
 
 }  // namespace
 
@@ -66,7 +92,7 @@ void VesselWorkspace::update() {
       results_ = std::move(*outcome->value);
       error_.clear();
       scene_dirty_ = true;
-      for (const auto& w : results_->solution.warnings) log().warning("Vessel: " + w);
+      for (const auto& w : results_->solved.solution.warnings) log().warning("Vessel: " + w);
       if (!results_->conversion_error.empty())
         log().warning("Vessel " + results_->conversion_error);
     } else if (outcome->error) {
@@ -78,7 +104,7 @@ void VesselWorkspace::update() {
   const VesselProject& current = document_.current();
   if (!requested_ || !(*requested_ == current)) {
     requested_ = current;
-    task_.start([project = current](TaskControl&) { return compute_vessel_results(project); });
+    task_.start([project = current](TaskControl&) { return run_stages(project); });
   }
 }
 
@@ -123,25 +149,37 @@ void VesselWorkspace::draw_summary() {
     if (results_) ImGui::TextDisabled("Showing the last design that could be solved.");
   }
   if (!results_) return;
-  const SynthesisResult& s = results_->solution.synthesis;
-  double worst = 0.0;
-  for (const TargetResidual& t : s.targets) worst = std::max(worst, std::abs(t.residual()));
+  // The numbers of report.json, from the job's report builder.
+  const nlohmann::ordered_json& f = results_->fields;
+  const SynthesisResult& s = results_->solved.solution.synthesis;
   ImGui::Text("%d targets, %d unknowns, %d free parameters", static_cast<int>(s.targets.size()),
               s.unknowns, s.free_parameters);
-  ImGui::Text("NLopt: %d evaluations, %s (%.2f s)", s.iterations, s.termination.c_str(),
-              solve_seconds_);
-  ImGui::Text("max |κ − κₖ| = %.3g 1/mm, objective %.3g", worst, s.objective);
-  ImGui::Text("stationarity %.2g, max condition violation %.2g", s.stationarity, s.max_violation);
-  ImGui::Text("depth %.4g mm, smallest R %.4g mm at %.1f°", results_->solution.depth, s.min_radius,
-              s.min_radius_angle * kDegreesPerRadian);
-  ImGui::Text("junction: κ = %.4g 1/mm, slope %.3g°", results_->solution.junction_curvature,
-              results_->solution.junction_slope * kDegreesPerRadian);
-  if (results_->conversion)
-    ImGui::Text("NURBS: %s", results_->conversion->text().c_str());
-  else if (!results_->conversion_error.empty())
+  ImGui::Text("NLopt: %d evaluations, %s (%s s)", s.iterations, s.termination.c_str(),
+              number_text(solve_seconds_).c_str());
+  ImGui::Text("max |κ − κₖ| = %s 1/mm, objective %s",
+              field(f, "synthesis", "max_abs_residual_per_mm").c_str(),
+              field(f, "synthesis", "objective").c_str());
+  ImGui::Text("stationarity %s, max condition violation %s",
+              field(f, "synthesis", "stationarity").c_str(),
+              field(f, "synthesis", "max_violation").c_str());
+  ImGui::Text("depth %s mm, smallest R %s mm at %s°", field(f, "head", "depth_mm").c_str(),
+              field(f, "synthesis", "min_radius_mm").c_str(),
+              field(f, "synthesis", "min_radius_at_deg").c_str());
+  ImGui::Text("junction: κ = %s 1/mm, slope %s°",
+              field(f, "head", "junction_curvature_per_mm").c_str(),
+              field(f, "head", "junction_slope_deg").c_str());
+  ImGui::Text("max membrane stress %s MPa",
+              number_text(f.at("stresses").at("max_stress_mpa").get<double>()).c_str());
+  if (results_->converted) {
+    const PolarConversion& c = results_->converted->conversion;
+    ImGui::Text("NURBS: %zu arcs, degree %d, %d control points, max radial error %s µm %s %s µm",
+                c.arcs.size(), c.curve.degree(), c.curve.size(),
+                number_text(to_micrometres(c.max_radial_error)).c_str(),
+                c.max_radial_error <= c.tolerance ? "≤" : ">",
+                number_text(to_micrometres(c.tolerance)).c_str());
+  } else if (!results_->conversion_error.empty()) {
     ImGui::TextColored(ImVec4(0.8f, 0.1f, 0.1f, 1), "%s", results_->conversion_error.c_str());
-  const float h = std::max(ImGui::GetFontSize() * 10, ImGui::GetContentRegionAvail().y);
-  plots_.draw_residuals(*results_, ImVec2(ImGui::GetContentRegionAvail().x, h));
+  }
 }
 
 void VesselWorkspace::draw_views() {
@@ -154,25 +192,31 @@ void VesselWorkspace::draw_views() {
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   const float spacing = ImGui::GetStyle().ItemSpacing.x;
   const ImVec2 cell((avail.x - spacing) * 0.5f, (avail.y - ImGui::GetStyle().ItemSpacing.y) * 0.5f);
-  plots_.draw_meridian(*results_, cell);
+  ImGui::BeginGroup();
+  draw_figure("meridian", results_->meridian, meridian_view_, cell);
+  ImGui::EndGroup();
   ImGui::SameLine();
   ImGui::BeginGroup();
-  if (results_->surfaces) {
+  if (results_->converted) {
     ImGui::Checkbox("control net", &scene_.visible(SceneLayer::net));
     scene_.draw(ImVec2(cell.x, cell.y - ImGui::GetFrameHeightWithSpacing()));
   } else {
     ImGui::TextDisabled("No surfaces: %s", results_->conversion_error.c_str());
   }
   ImGui::EndGroup();
-  plots_.draw_curvature(*results_, cell);
+  ImGui::BeginGroup();
+  draw_figure("curvature", results_->curvature, curvature_view_, cell);
+  ImGui::EndGroup();
   ImGui::SameLine();
-  plots_.draw_stresses(*results_, cell);
+  ImGui::BeginGroup();
+  draw_figure("stresses", results_->stresses, stress_view_, cell);
+  ImGui::EndGroup();
 }
 
 void VesselWorkspace::rebuild_scene() {
   scene_dirty_ = false;
-  if (!results_ || !results_->surfaces) return;
-  const VesselSurfaces& s = *results_->surfaces;
+  if (!results_ || !results_->converted) return;
+  const VesselSurfaces& s = results_->converted->surfaces;
   const SceneBounds bounds = [&] {
     SceneBounds b = bounds_of(s.head);
     const SceneBounds c = bounds_of(s.far_head);
@@ -196,51 +240,44 @@ void VesselWorkspace::rebuild_scene() {
 }
 
 std::vector<ExportChoice> VesselWorkspace::export_choices() const {
-  const bool ready = results_ && results_->surfaces;
+  const bool ready = results_ && results_->converted;
   const std::string stem = document_.path().empty() ? "vessel" : document_.path().stem().string();
   const std::string needs = ready ? "" : "needs a solved and converted head";
-  return {{{"all", "Export all outputs into the folder", "", stem + "_outputs"},
-           "All outputs to a folder…",
-           ready,
-           "What `polarform vessel` writes: profile and head as IGES, STEP and DXF, the vessel "
-           "as a STEP shell, SVG plots, CSV samples, report.html and report.json"},
-          {{"iges", "Export IGES", ".igs", stem + ".igs"}, "Surfaces as IGES…", ready, needs, true},
-          {{"step", "Export STEP", ".stp", stem + ".stp"}, "Surfaces as STEP…", ready, needs},
-          {{"x3d", "Export X3D", ".x3d", stem + ".x3d"}, "Surfaces as X3D…", ready, needs}};
+  return {
+      {{"all", "Export all outputs into the folder", "", stem + "_outputs"},
+       "All outputs to a folder…",
+       ready,
+       "What `polarform vessel` writes: profile and head as IGES, STEP and DXF, the vessel "
+       "as a STEP shell, SVG plots, CSV samples, report.html and report.json"},
+      {{"iges", "Export IGES", ".igs", stem + "_head.igs"},
+       "Head surface as IGES…",
+       ready,
+       needs,
+       true},
+      {{"step", "Export STEP", ".stp", stem + ".stp"},
+       "Vessel (head, cylinder, far head) as STEP…",
+       ready,
+       needs},
+      {{"dxf", "Export DXF", ".dxf", stem + "_profile.dxf"}, "Head profile as DXF…", ready, needs}};
 }
 
 void VesselWorkspace::export_to(const ExportRequest& request, const std::filesystem::path& file) {
-  if (!results_ || !results_->surfaces) return;
-  const VesselSurfaces& s = *results_->surfaces;
+  if (!results_ || !results_->converted) return;
   guarded(log(), "Export " + file.filename().string(), [&] {
+    VesselOutputOptions options;
+    options.design_name = document_.path().empty() ? "vessel" : document_.path().stem().string();
+    const VesselJobResult job = run_vessel_job(document_.current());
     if (request.tag == "all") {
-      VesselOutputOptions options;
-      options.design_name =
-          document_.path().empty() ? "vessel" : document_.path().stem().string();
-      const auto files = write_vessel_outputs(run_vessel_job(document_.current()), file, options);
+      const auto files = write_vessel_outputs(job, file, options);
       log().info("Wrote " + std::to_string(files.size()) + " files into " + file.string());
       return;
     }
-    if (request.tag == "iges") {
-      IgesWriter w;
-      w.add(s.head, "head");
-      w.add(s.cylinder, "cylinder");
-      w.add(s.far_head, "far head");
-      w.save(file);
-    } else if (request.tag == "step") {
-      StepWriter w("vessel");
-      w.add(s.head, "head");
-      w.add(s.cylinder, "cylinder");
-      w.add(s.far_head, "far head");
-      w.save(file);
-    } else if (request.tag == "x3d") {
-      X3dWriter w;
-      w.add(s.head, "head");
-      w.add(s.cylinder, "cylinder");
-      w.add(s.far_head, "far_head");
-      w.save(file, document_.name());
-    }
-    log().info("Exported " + file.string());
+    // One file of the job's bundle, byte for byte what `polarform vessel` writes.
+    const std::string name = request.tag == "iges"   ? "head.igs"
+                             : request.tag == "step" ? "vessel.stp"
+                                                     : "profile.dxf";
+    write_file_atomically(file, render_vessel_outputs(job, options).at(name));
+    log().info("Exported " + file.string() + " (" + name + ")");
   });
 }
 
@@ -252,21 +289,9 @@ void VesselWorkspace::bench_step(int frame, int frames) {
 }
 
 std::string VesselWorkspace::numbers() const {
-  std::ostringstream out;
-  if (!results_) {
-    out << "solved=0\n";
-    return out.str();
-  }
-  const VesselSolution& s = results_->solution;
-  double worst = 0.0, hoop = 0.0;
-  for (const TargetResidual& t : s.synthesis.targets)
-    worst = std::max(worst, std::abs(t.residual()));
-  for (const StressSample& x : s.stresses.samples) hoop = std::max(hoop, x.hoop_stress);
-  out << "solved=1\npressure_mpa=" << results_->project.design.pressure << "\ndepth_mm=" << s.depth
-      << "\nmax_abs_residual_per_mm=" << worst << "\niterations=" << s.synthesis.iterations
-      << "\nmax_hoop_stress_mpa=" << hoop << "\n";
-  if (results_->conversion) out << results_->conversion->numbers();
-  return out.str();
+  if (!results_) return "solved=0\n";
+  // The fields of report.json for the stages shown, from the job's own report builder.
+  return "solved=1\n" + report_lines(results_->fields);
 }
 
 }  // namespace polarform::studio

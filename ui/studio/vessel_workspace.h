@@ -1,23 +1,35 @@
 // The vessel workspace: edit a pressure-vessel design (settings, preset, curvature targets, end
-// conditions), see the NLopt synthesis re-solve in the background after every edit with its
-// residuals, the meridian, curvature and stress plots, and the revolved NURBS vessel in 3D; save
-// the project and export the surfaces.
+// conditions), see the vessel job's stages re-run in the background after every edit — the NLopt
+// synthesis with its residuals, then the conversion and the revolved surfaces — with the job's
+// meridian, curvature and stress figures and the revolved NURBS vessel in 3D; save the project
+// and export the job's outputs.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 
 #include "jobs/project/vessel_project.h"
+#include "jobs/vessel/vessel_job.h"
 #include "ui/studio/background_task.h"
 #include "ui/studio/curvature_table.h"
+#include "ui/studio/plot_canvas.h"
 #include "ui/studio/project_document.h"
 #include "ui/studio/scene_view.h"
 #include "ui/studio/vessel_design_panel.h"
-#include "ui/studio/vessel_plots.h"
-#include "ui/studio/vessel_results.h"
 #include "ui/studio/workspace.h"
 
 namespace polarform::studio {
+
+// What a background run of the vessel job's stages hands the workspace: the solve, its conversion
+// (or why there is none, so the solve still shows), the report's fields and the job's figures.
+struct VesselRun {
+  VesselSolveStage solved;
+  std::optional<VesselConversionStage> converted;
+  std::string conversion_error;
+  nlohmann::ordered_json fields;  // vessel_report_fields of the stages
+  Figure meridian, curvature, stresses;
+};
 
 class VesselWorkspace : public Workspace {
  public:
@@ -59,15 +71,15 @@ class VesselWorkspace : public Workspace {
   void rebuild_scene();
 
   ProjectDocument<VesselProject> document_;
-  BackgroundTask<VesselResults> task_;
+  BackgroundTask<VesselRun> task_;
   std::optional<VesselProject> requested_;  // the input of the running or last solve
-  std::optional<VesselResults> results_;    // the last successful solve
+  std::optional<VesselRun> results_;        // the last successful solve
   std::string error_;                       // why the latest input could not be solved
   double solve_seconds_ = 0.0;
   double bench_pressure_ = 0.0;
   VesselDesignPanel design_panel_;
   CurvatureTable curvature_table_;
-  VesselPlots plots_;
+  FigureView meridian_view_, curvature_view_, stress_view_;
   SceneView scene_;
   bool scene_dirty_ = false;
   bool has_document_ = false;

@@ -55,6 +55,17 @@ class ScratchDir {
   fs::path dir_;
 };
 
+// The alternatives of a cam job's result, for tests that know which cam they run.
+inline const PlateProfile& plate_profile(const CamJobResult& r) {
+  return std::get<PlateProfile>(r.conversion.profile);
+}
+inline const CylindricalTrack& track_of(const CamJobResult& r) {
+  return std::get<CylindricalTrack>(r.conversion.profile);
+}
+inline const CamAnalysis& plate_analysis(const CamJobResult& r) {
+  return std::get<PlateCamAnalysis>(r.analysis.cam).analysis;
+}
+
 inline std::string slurp(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw std::runtime_error(file.string() + ": cannot open");

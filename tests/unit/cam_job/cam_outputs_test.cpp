@@ -31,7 +31,7 @@ std::set<std::string> promised_files(bool plate) {
 TEST(CamOutputs, EveryPromisedFileExistsNonEmptyAndIsListed) {
   for (const std::string& name : kExampleNames) {
     const ExampleRun& run = example(name);
-    const std::set<std::string> promised = promised_files(run.result.plate.has_value());
+    const std::set<std::string> promised = promised_files(run.result.plate());
     const std::map<std::string, std::string> files = snapshot(run.dir.path());
     std::set<std::string> written;
     for (const auto& [file, content] : files) {
@@ -59,14 +59,14 @@ TEST(CamOutputs, ReportCarriesTheIssueFieldsWithTheJobsNumbers) {
     SCOPED_TRACE(name);
     EXPECT_EQ(j["command"], "cam");
     EXPECT_FALSE(j["polarform_version"].get<std::string>().empty());
-    EXPECT_EQ(j["tolerance_mm"].get<double>(), r.project.conversion.tolerance);
-    EXPECT_EQ(j["max_radial_error_mm"].get<double>(), r.conversion.max_radial_error);
-    EXPECT_EQ(j["max_normal_error_mm"].get<double>(), r.conversion.max_normal_error);
+    EXPECT_EQ(j["tolerance_mm"].get<double>(), r.project().conversion.tolerance);
+    EXPECT_EQ(j["max_radial_error_mm"].get<double>(), r.conversion.conversion.max_radial_error);
+    EXPECT_EQ(j["max_normal_error_mm"].get<double>(), r.conversion.conversion.max_normal_error);
     EXPECT_LE(j["max_radial_error_mm"].get<double>(), j["tolerance_mm"].get<double>());
     EXPECT_LE(j["max_normal_error_mm"].get<double>(), j["tolerance_mm"].get<double>());
     EXPECT_GT(j["max_radial_error_mm"].get<double>(), 0.0);
-    const int degree = r.plate ? r.profile.degree() : r.track.degree();
-    const int points = r.plate ? r.profile.size() : r.track.size();
+    const int degree = r.plate() ? plate_profile(r).curve.degree() : track_of(r).curve.degree();
+    const int points = r.plate() ? plate_profile(r).curve.size() : track_of(r).curve.size();
     EXPECT_EQ(j["degree"].get<int>(), degree);
     EXPECT_EQ(j["control_points"].get<int>(), points);
     EXPECT_EQ(j["knot_count"].get<int>(), points + degree + 1);
@@ -77,7 +77,7 @@ TEST(CamOutputs, ReportCarriesTheIssueFieldsWithTheJobsNumbers) {
 
     // Arcs: count, a full turn, and the worst arc is the reported maximum.
     ASSERT_EQ(j["arcs"].get<std::size_t>(), j["arc_list"].size());
-    EXPECT_EQ(j["arcs"].get<std::size_t>(), r.conversion.arcs.size());
+    EXPECT_EQ(j["arcs"].get<std::size_t>(), r.conversion.conversion.arcs.size());
     double sweep = 0, worst = 0;
     for (const json& arc : j["arc_list"]) {
       sweep += arc["sweep_deg"].get<double>();
@@ -92,7 +92,7 @@ TEST(CamOutputs, ReportCarriesTheIssueFieldsWithTheJobsNumbers) {
               j["tolerance_mm"].get<double>() * (1 + 1e-12));
 
     // The design as read.
-    const CamDesign& d = r.project.cam;
+    const CamDesign& d = r.project().cam;
     EXPECT_EQ(j["cam"]["rpm"].get<double>(), d.rpm);
     EXPECT_EQ(j["cam"]["base_radius_mm"].get<double>(), d.base_radius);
     EXPECT_NEAR(j["speed_rad_per_s"].get<double>(), 2 * kPi * d.rpm / 60, 1e-12);
@@ -103,17 +103,17 @@ TEST(CamOutputs, ReportCarriesTheIssueFieldsWithTheJobsNumbers) {
       EXPECT_NEAR(j["segments"][k]["end_deg"].get<double>(), d.segments[k].end * kDegreesPerRadian,
                   1e-9);
 
-    if (r.plate) {
+    if (r.plate()) {
       EXPECT_EQ(j["cam"]["type"], "plate");
       EXPECT_EQ(j["max_pressure_angle_deg"].get<double>(),
-                r.analysis->max_pressure_angle.value * kDegreesPerRadian);
+                plate_analysis(r).max_pressure_angle.value * kDegreesPerRadian);
       EXPECT_EQ(j["min_radius_of_curvature_mm"].get<double>(),
-                r.analysis->min_convex_contour_radius.value);
+                plate_analysis(r).min_convex_contour_radius.value);
       EXPECT_GT(j["min_radius_of_curvature_mm"].get<double>(), 0.0);
       EXPECT_TRUE(j["undercut_ranges_deg"].empty());
       const json& limited = j["degree_limited"];
       EXPECT_EQ(limited["degree"], 3);
-      EXPECT_EQ(limited["control_points"].get<int>(), r.limited->curve.size());
+      EXPECT_EQ(limited["control_points"].get<int>(), plate_profile(r).limited->curve.size());
       EXPECT_LE(limited["max_radial_error_mm"].get<double>(), j["tolerance_mm"].get<double>());
       EXPECT_FALSE(j.contains("exported_profile"));  // no max-degree in the examples
     } else {
@@ -162,7 +162,7 @@ TEST(CamOutputs, SvajCsvCoversTheRevolutionWithTheDesignsDisplacement) {
                                        "ds/dtheta [mm/rad]",
                                        "d2s/dtheta2 [mm/rad^2]",
                                        "d3s/dtheta3 [mm/rad^3]"};
-    if (run.result.plate) {
+    if (run.result.plate()) {
       header.insert(header.end(), {"pressure angle [deg]", "contour radius of curvature [mm]",
                                    "pitch radius of curvature [mm]"});
     } else {
@@ -170,7 +170,7 @@ TEST(CamOutputs, SvajCsvCoversTheRevolutionWithTheDesignsDisplacement) {
     }
     EXPECT_EQ(csv.header, header);
     ASSERT_EQ(csv.rows.size(), 720u);
-    const double omega = 2 * kPi * run.result.project.cam.rpm / 60;
+    const double omega = 2 * kPi * run.result.project().cam.rpm / 60;
     double top = 0, bottom = INFINITY;
     for (std::size_t k = 0; k < csv.rows.size(); ++k) {
       const std::vector<double>& row = csv.rows[k];
@@ -180,7 +180,7 @@ TEST(CamOutputs, SvajCsvCoversTheRevolutionWithTheDesignsDisplacement) {
       EXPECT_NEAR(row[2], row[5] * omega, 1e-9 * (1 + std::abs(row[2])));          // v = s'ω
       EXPECT_NEAR(row[3], row[6] * omega * omega, 1e-9 * (1 + std::abs(row[3])));  // a = s''ω²
     }
-    EXPECT_NEAR(top, stroke_of(run.result.project.cam), 1e-9);
+    EXPECT_NEAR(top, stroke_of(run.result.project().cam), 1e-9);
     EXPECT_NEAR(bottom, 0.0, 1e-9);
   }
 }
@@ -228,6 +228,20 @@ TEST(CamOutputs, TwoRunsGiveIdenticalFilesUpToTimeStamps) {
           << name << "/" << file << " differs beyond its time stamps";
     }
   }
+}
+
+// With SOURCE_DATE_EPOCH every file but report.json (its timing) is the same bytes run after run.
+TEST(CamOutputs, SourceDateEpochMakesTheBundleReproducible) {
+  ::setenv("SOURCE_DATE_EPOCH", "1700000000", 1);
+  const CamJobResult& r = example("roller").result;
+  const auto first = render_cam_outputs(r), second = render_cam_outputs(run_cam_job(r.project()));
+  ::unsetenv("SOURCE_DATE_EPOCH");
+  ASSERT_EQ(first.size(), second.size());
+  for (const auto& [file, text] : first) {
+    if (file == "report.json") continue;
+    EXPECT_TRUE(text == second.at(file)) << file;
+  }
+  EXPECT_NE(first.at("profile.igs").find("15H20231114.221320"), std::string::npos);
 }
 
 }  // namespace

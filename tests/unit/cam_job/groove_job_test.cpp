@@ -22,9 +22,9 @@ int count(const std::string& text, const std::string& what) {
 
 TEST(GrooveJob, BothWallsMeetTheToleranceAgainstTheExactEnvelope) {
   const CamJobResult& r = example("cylindrical").result;
-  ASSERT_EQ(r.groove.size(), 2u);
-  const double tol = r.project.conversion.tolerance;
-  for (const GrooveSurface& g : r.groove) {
+  ASSERT_EQ(track_of(r).groove.size(), 2u);
+  const double tol = r.project().conversion.tolerance;
+  for (const GrooveSurface& g : track_of(r).groove) {
     EXPECT_EQ(g.surface.front_v(), 52.0);  // cylinder-radius 60 ± groove-depth 16 / 2
     EXPECT_EQ(g.surface.back_v(), 68.0);
     EXPECT_LE(g.max_error, tol);
@@ -32,8 +32,9 @@ TEST(GrooveJob, BothWallsMeetTheToleranceAgainstTheExactEnvelope) {
     double worst = 0.0;
     for (int i = 0; i < 200; ++i)
       for (int j = 0; j < 20; ++j) {
-        const Eigen::Vector3d w = r.barrel->groove_wall_point(
-            2 * std::numbers::pi * (i + 0.43) / 200, 52.5 + 15.0 * j / 19, g.side);
+        const Eigen::Vector3d w = std::get<BarrelCam>(r.design.cam)
+                                      .groove_wall_point(2 * std::numbers::pi * (i + 0.43) / 200,
+                                                         52.5 + 15.0 * j / 19, g.side);
         const double rho = std::hypot(w.x(), w.y());
         const Eigen::Vector3d s = g.surface.point(g.base.parameter(std::atan2(w.y(), w.x())), rho);
         worst = std::max(worst, (s - w).norm());
@@ -54,10 +55,10 @@ TEST(GrooveJob, FilesAndReportCarryBothWalls) {
   const json j = read_json(run.dir / "report.json");
   ASSERT_TRUE(j.contains("groove"));
   EXPECT_EQ(j["groove"]["depth_mm"].get<double>(), 16.0);
-  EXPECT_EQ(j["groove"]["tolerance_mm"].get<double>(), run.result.project.conversion.tolerance);
+  EXPECT_EQ(j["groove"]["tolerance_mm"].get<double>(), run.result.project().conversion.tolerance);
   ASSERT_EQ(j["groove"]["walls"].size(), 2u);
   for (std::size_t k = 0; k < 2; ++k) {
-    const GrooveSurface& g = run.result.groove[k];
+    const GrooveSurface& g = track_of(run.result).groove[k];
     const json& w = j["groove"]["walls"][k];
     EXPECT_EQ(w["degree_u"].get<int>(), g.surface.degree_u());
     EXPECT_EQ(w["degree_v"].get<int>(), g.surface.degree_v());
@@ -83,7 +84,7 @@ TEST(GrooveJob, GrooveDepthRoundTripsThroughTheProjectFile) {
   none.cam.groove_depth = 0.0;
   EXPECT_EQ(cam_project_xml(none).find("groove-depth"), std::string::npos);
   EXPECT_EQ(parse_cam_project(cam_project_xml(none), "none.xml", warnings), none);
-  EXPECT_TRUE(run_cam_job(none).groove.empty());
+  EXPECT_TRUE(track_of(run_cam_job(none)).groove.empty());
 }
 
 TEST(GrooveJob, BadGrooveDepthNamesFileLineAndAttribute) {

@@ -1,8 +1,10 @@
-// Shared exchange helpers: round-trip real formatting, closure / periodicity / planarity facts,
-// exact iso-curves and curve reversal, each against closed forms or dense evaluation.
+// Shared exchange helpers: round-trip real formatting, reproducible time stamps, closure /
+// periodicity / planarity facts, exact iso-curves and curve reversal, each against closed forms or
+// dense evaluation.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <ctime>
 #include <random>
 
 #include "exchange_fixtures.h"
@@ -33,6 +35,28 @@ TEST(ExchangeReal, ShortestRoundTripWithDecimalPoint) {
     ASSERT_NE(text.find('.'), std::string::npos) << text;
     ASSERT_EQ(std::strtod(text.c_str(), nullptr), x) << text;
   }
+}
+
+// SOURCE_DATE_EPOCH (reproducible-builds.org) fixes the files' time stamps; a malformed value is
+// bad input naming the variable; without it the stamp is the current time.
+TEST(ExchangeTimeStamp, SourceDateEpochFixesTheStamp) {
+  const char* saved = std::getenv("SOURCE_DATE_EPOCH");
+  const std::string before = saved ? saved : "";
+  ::setenv("SOURCE_DATE_EPOCH", "1700000000", 1);
+  EXPECT_EQ(utc_time_stamp("%Y%m%d.%H%M%S"), "20231114.221320");
+  for (const char* bad : {"", "17e8", "-5", "12 ", "now"}) {
+    ::setenv("SOURCE_DATE_EPOCH", bad, 1);
+    try {
+      utc_time_stamp("%Y");
+      ADD_FAILURE() << "accepted SOURCE_DATE_EPOCH=\"" << bad << "\"";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("SOURCE_DATE_EPOCH"), std::string::npos) << e.what();
+    }
+  }
+  ::unsetenv("SOURCE_DATE_EPOCH");
+  const std::time_t now = std::time(nullptr);
+  EXPECT_LE(std::abs(static_cast<double>(stamp_time() - now)), 2.0);
+  if (saved) ::setenv("SOURCE_DATE_EPOCH", before.c_str(), 1);
 }
 
 TEST(ExchangeGeometry, ClosureAndPeriodicStructure) {

@@ -162,8 +162,8 @@ TEST(DemoFigures, WriteSvajStudyProfileAndReport) {
   HtmlReport report("Demo cam: plots for review");
   report.add_key_figures({{"lift", "10 mm"}, {"base radius", "40 mm"}, {"samples", "1084"}});
   for (int i = 0; i < 3; ++i) {
-    const std::string svg = figures[i].svg();
-    figures[i].save(dir / names[i]);
+    const std::string svg = svg_document(figures[i]);
+    save_svg(figures[i], dir / names[i]);
     EXPECT_EQ(read(dir / names[i]), svg);
     report.add_svg(svg, names[i]);
   }
@@ -177,7 +177,7 @@ TEST(DemoFigures, WriteSvajStudyProfileAndReport) {
   EXPECT_EQ(csv.rows(), 481u + 61u + 481u + 61u);
 
   // The SVAJ stack: four aligned panels over 0..360° with ticks every 30°.
-  const test::ParsedSvg svaj(figures[0].svg());
+  const test::ParsedSvg svaj(svg_document(figures[0]));
   EXPECT_EQ(svaj.all("plot-area").size(), 4u);
   EXPECT_EQ(svaj.all("x-tick").size(), 13u);
   EXPECT_EQ(svaj.all("band").size(), 6u);

@@ -17,7 +17,7 @@ std::string small_figure() {
   Figure figure(400, 250);
   Plot& plot = figure.add_panel();
   plot.add({"R", {0, 1, 2}, {1, 2, 1.5}});
-  return figure.svg();
+  return svg_document(figure);
 }
 
 TEST(HtmlReport, IsWellFormedWithEscapedTextAndInlineFigures) {

@@ -51,7 +51,7 @@ TEST(SvgPlot, KnownPointsLandWhereTheAxisTransformSays) {
   plot.x_range = AxisRange{0, 10};
   plot.y_range = AxisRange{-1, 1};
   plot.add({"data", {2.5, 7.5, 10}, {0.5, -0.5, 1}});
-  const ParsedSvg svg(figure.svg());
+  const ParsedSvg svg(svg_document(figure));
   const auto frames = svg.all("plot-area");
   ASSERT_EQ(frames.size(), 1u);
   const PixelRect a = test::area_of(frames[0]);
@@ -78,7 +78,7 @@ TEST(SvgPlot, TicksAreNiceCoverTheRangeAndSitOnTheirValues) {
     y.push_back(-3.7 + 15.9 * std::pow(std::sin(i * std::numbers::pi / 360), 2));
   }
   plot.add({"s", x, y});
-  const ParsedSvg svg(figure.svg());
+  const ParsedSvg svg(svg_document(figure));
   const PixelRect a = test::area_of(svg.all("plot-area")[0]);
   // x fits the data exactly, y has 5 % margins.
   const Axis ax{0, 360, a.left, a.right};
@@ -122,7 +122,7 @@ TEST(SvgPlot, LogAxesTickAtDecades) {
   Plot& plot = figure.add_panel();
   plot.log_x = plot.log_y = true;
   plot.add({"quartic", {1e-6, 1e-4, 1e-2, 0.3}, {900, 130, 20, 7}, Series::Style::line_markers});
-  const ParsedSvg svg(figure.svg());
+  const ParsedSvg svg(svg_document(figure));
   const PixelRect a = test::area_of(svg.all("plot-area")[0]);
   // With markers, x gets 3 % margins (in decades) so that end markers clear the frame.
   const double x_margin = std::pow(0.3 / 1e-6, 0.03);
@@ -156,7 +156,7 @@ TEST(SvgPlot, NonFiniteValuesBreakTheLineIntoSubpaths) {
   plot.add({"gappy",
             {0, 1, 2, 3, 4, 5, 6},
             {0, 1, kNaN, 3, 4, std::numeric_limits<double>::infinity(), 6}});
-  const ParsedSvg svg(figure.svg());
+  const ParsedSvg svg(svg_document(figure));
   const std::vector<Polyline> pieces = series_paths(svg);
   ASSERT_EQ(pieces.size(), 3u);
   EXPECT_EQ(pieces[0].size(), 2u);
@@ -170,7 +170,7 @@ TEST(SvgPlot, NonPositiveValuesOnALogAxisAreDroppedAndCounted) {
   Plot& plot = figure.add_panel();
   plot.log_y = true;
   plot.add({"error", {0, 1, 2, 3, 4}, {1e-3, 0, 1e-4, -2, 1e-5}});
-  const ParsedSvg svg(figure.svg());
+  const ParsedSvg svg(svg_document(figure));
   EXPECT_EQ(series_paths(svg).size(), 3u);
   const auto legend = svg.all("legend");
   ASSERT_EQ(legend.size(), 1u);
@@ -190,7 +190,7 @@ TEST(SvgPlot, DecimationToPixelColumnsKeepsTheSpikes) {
   s.y[123457] = 7.5;  // spikes of a single sample
   s.y[160001] = -4.25;
   plot.add(std::move(s));
-  const std::string text = figure.svg();
+  const std::string text = svg_document(figure);
   EXPECT_LT(text.size(), 120000u);
   const ParsedSvg svg(text);
   const PixelRect a = test::area_of(svg.all("plot-area")[0]);
@@ -215,7 +215,7 @@ TEST(SvgPlot, DataOutsideAFixedRangeAreClippedToThePlotArea) {
   Plot& plot = figure.add_panel();
   plot.y_range = AxisRange{0, 1};
   plot.add({"", {0, 1, 2, 3}, {0.5, 5, 0.5, 1e300}});
-  const ParsedSvg svg(figure.svg());
+  const ParsedSvg svg(svg_document(figure));
   const PixelRect a = test::area_of(svg.all("plot-area")[0]);
   const std::vector<Polyline> pieces = series_paths(svg);
   ASSERT_EQ(pieces.size(), 2u);
@@ -236,7 +236,7 @@ TEST(SvgPlot, ConstantAndEmptySeriesStillDraw) {
   constant.add({"flat", {0, 1, 2}, {5, 5, 5}});
   Plot& empty = figure.add_panel();
   empty.add({"nothing", {}, {}});
-  const ParsedSvg svg(figure.svg());
+  const ParsedSvg svg(svg_document(figure));
   const auto panels = svg.all("panel");
   ASSERT_EQ(panels.size(), 2u);
   const PixelRect a = test::area_of(test::by_class(panels[0], "plot-area")[0]);
@@ -260,7 +260,7 @@ TEST(SvgPlot, SharedXStacksAlignAndLabelOnlyTheBottom) {
     p.y_label = names[k];
     p.add({"", {0, 90.0 * (k + 1)}, {0, std::pow(100.0, k)}});  // x data differ per panel
   }
-  const ParsedSvg svg(figure.svg());
+  const ParsedSvg svg(svg_document(figure));
   const auto panels = svg.all("panel");
   ASSERT_EQ(panels.size(), 4u);
   const PixelRect first = test::area_of(test::by_class(panels[0], "plot-area")[0]);
@@ -296,7 +296,7 @@ TEST(SvgPlot, EqualAspectDrawsACircleRound) {
     circle.y.push_back(-10 + 20 * std::sin(i * kRadiansPerDegree));
   }
   plot.add(std::move(circle));
-  const ParsedSvg svg(figure.svg());
+  const ParsedSvg svg(svg_document(figure));
   double left = 1e9, right = -1e9, top = 1e9, bottom = -1e9;
   for (const Polyline& piece : series_paths(svg))
     for (const PixelPoint& p : piece) {
@@ -325,7 +325,7 @@ TEST(SvgPlot, ReferenceLinesBandsAndAnnotationsSitAtTheirValues) {
   plot.add_horizontal_line(30, "limit 30\u00B0", "#D55E00");
   plot.add_band(170, 190, "jerk discontinuity", "#D55E00");
   plot.add_annotation(200, 25, "max");
-  const ParsedSvg svg(figure.svg());
+  const ParsedSvg svg(svg_document(figure));
   const PixelRect a = test::area_of(svg.all("plot-area")[0]);
   const Axis ax{0, 360, a.left, a.right}, ay{0, 40, a.bottom, a.top};
   EXPECT_NEAR(test::subpaths(svg.all("vertical")[0]->Attribute("d"))[0][0].x, ax(120), kPx);
@@ -342,12 +342,36 @@ TEST(SvgPlot, ReferenceLinesBandsAndAnnotationsSitAtTheirValues) {
   EXPECT_EQ(rows, 2);
 }
 
+// A highlighted point is a ring at its value carrying its explanation as a tooltip (<title>), and
+// the automatic y range makes room for it.
+TEST(SvgPlot, HighlightsAreRingsWithTheirExplanation) {
+  Figure figure;
+  Plot& plot = figure.add_panel();
+  plot.x_range = AxisRange{0, 360};
+  plot.add({"jerk", {0, 90, 90, 360}, {0, 0, 200, 0}});
+  plot.add_highlight(90, 250, "jerk jumps by 250 at 90°");
+  plot.add_highlight(400, 0, "outside the x range: not drawn", "#0072B2");
+  const ParsedSvg svg(svg_document(figure));
+  const PixelRect a = test::area_of(svg.all("plot-area")[0]);
+  const auto rings = svg.all("highlight");
+  ASSERT_EQ(rings.size(), 1u);
+  const XMLElement* ring = rings[0];
+  EXPECT_STREQ(ring->Attribute("fill"), "none");
+  EXPECT_STREQ(ring->Attribute("stroke"), "#D55E00");  // the default: the error colour
+  EXPECT_STREQ(ring->FirstChildElement("title")->GetText(), "jerk jumps by 250 at 90°");
+  const Axis ax{0, 360, a.left, a.right};
+  EXPECT_NEAR(ring->DoubleAttribute("cx"), ax(90), kPx);
+  // y fits 0..250 with 5 % margins, so the ring lies inside the plot area, below its top.
+  EXPECT_GT(ring->DoubleAttribute("cy"), a.top);
+  EXPECT_LT(ring->DoubleAttribute("cy"), a.top + 0.1 * (a.bottom - a.top));
+}
+
 TEST(SvgPlot, LegendAvoidsTheData) {
   Figure figure;
   Plot& plot = figure.add_panel();
   // A rising line through the top-right and bottom-left corners.
   plot.add({"rising", {0, 10}, {0, 10}});
-  const ParsedSvg svg(figure.svg());
+  const ParsedSvg svg(svg_document(figure));
   const PixelRect a = test::area_of(svg.all("plot-area")[0]);
   const XMLElement* box = svg.all("legend")[0]->FirstChildElement("rect");
   EXPECT_NEAR(box->DoubleAttribute("x"), a.left + 8, kPx);  // top left is free
@@ -363,7 +387,7 @@ TEST(SvgPlot, TextIsEscapedAndOutputIsDeterministic) {
     plot.y_label = "e [mm]";
     plot.add({"a<b", {0, 1, 2}, {0.1, 0.3, 0.2}, Series::Style::dashed});
     plot.add({"c&d", {0, 1, 2}, {0.2, 0.1, 0.3}, Series::Style::markers});
-    return figure.svg();
+    return svg_document(figure);
   };
   const std::string text = build();
   EXPECT_EQ(text, build());
@@ -404,8 +428,12 @@ TEST(SvgPlot, BadInputIsRejectedWithTheField) {
             std::string::npos);
   EXPECT_NE(message([&] { plot.add_vertical_line(kNaN); }).find("x must be finite"),
             std::string::npos);
+  EXPECT_NE(message([&] { plot.add_highlight(1, kNaN, "why"); }).find("add_highlight: y"),
+            std::string::npos);
+  EXPECT_NE(message([&] { plot.add_highlight(1, 2, ""); }).find("text must not be empty"),
+            std::string::npos);
   EXPECT_NE(message([] { Figure(100, 400); }).find("width"), std::string::npos);
-  EXPECT_NE(message([] { Figure().svg(); }).find("no panels"), std::string::npos);
+  EXPECT_NE(message([] { svg_document(Figure()); }).find("no panels"), std::string::npos);
 
   Figure figure;
   Plot& p = figure.add_panel();
@@ -413,26 +441,28 @@ TEST(SvgPlot, BadInputIsRejectedWithTheField) {
   p.add({"", {1, 2}, {1, 2}});
   p.log_y = true;
   p.y_range = AxisRange{0, 1};
-  EXPECT_NE(message([&] { figure.svg(); }).find("panel 1 ('Errors') y_range must be positive"),
-            std::string::npos);
+  EXPECT_NE(
+      message([&] { svg_document(figure); }).find("panel 1 ('Errors') y_range must be positive"),
+      std::string::npos);
   p.log_y = false;
   p.y_range = AxisRange{3, 1};
-  EXPECT_NE(
-      message([&] { figure.svg(); }).find("y_range must be finite with min < max, got [3, 1]"),
-      std::string::npos);
+  EXPECT_NE(message([&] {
+              svg_document(figure);
+            }).find("y_range must be finite with min < max, got [3, 1]"),
+            std::string::npos);
   p.y_range.reset();
   p.x_tick_step = 1e-6;
-  EXPECT_NE(message([&] { figure.svg(); }).find("x_tick_step 1e-06 gives more than"),
+  EXPECT_NE(message([&] { svg_document(figure); }).find("x_tick_step 1e-06 gives more than"),
             std::string::npos);
   p.x_tick_step.reset();
   p.equal_aspect = true;
   p.log_x = true;
-  EXPECT_NE(message([&] { figure.svg(); }).find("equal_aspect needs linear axes"),
+  EXPECT_NE(message([&] { svg_document(figure); }).find("equal_aspect needs linear axes"),
             std::string::npos);
 
   Figure tall(400, 300);
   for (int k = 0; k < 6; ++k) tall.add_panel();
-  EXPECT_NE(message([&] { tall.svg(); }).find("height 300 px"), std::string::npos);
+  EXPECT_NE(message([&] { svg_document(tall); }).find("height 300 px"), std::string::npos);
 }
 
 TEST(SvgPlot, UserTickStepGivesThoseMultiples) {
@@ -441,7 +471,7 @@ TEST(SvgPlot, UserTickStepGivesThoseMultiples) {
   plot.x_range = AxisRange{0, 360};
   plot.x_tick_step = 45;
   plot.add({"", {0, 360}, {0, 1}});
-  const ParsedSvg svg(figure.svg());
+  const ParsedSvg svg(svg_document(figure));
   const auto ticks = tick_labels(svg, "x-tick");
   ASSERT_EQ(ticks.size(), 9u);
   for (std::size_t i = 0; i < ticks.size(); ++i) EXPECT_EQ(ticks[i].first, 45.0 * i);

@@ -29,15 +29,15 @@ TEST(VesselJob, EveryExampleMeetsItsTolerance) {
   for (const std::string& name : example_names()) {
     const VesselProject project = load_example(name);
     const VesselJobResult r = run_vessel_job(project);
-    EXPECT_EQ(r.conversion.tolerance, project.tolerance) << name;
-    EXPECT_LE(r.conversion.max_radial_error, project.tolerance) << name;
-    EXPECT_GT(r.conversion.max_radial_error, 0.0) << name;  // measured, not assumed
-    EXPECT_GT(r.solution.synthesis.iterations, 0) << name;
-    EXPECT_LE(r.solution.synthesis.max_violation, 1e-6) << name;
-    EXPECT_NEAR(r.surfaces.junction_radius, 500.0, 1e-9) << name;
+    EXPECT_EQ(r.converted.conversion.tolerance, project.tolerance) << name;
+    EXPECT_LE(r.converted.conversion.max_radial_error, project.tolerance) << name;
+    EXPECT_GT(r.converted.conversion.max_radial_error, 0.0) << name;  // measured, not assumed
+    EXPECT_GT(r.solved.solution.synthesis.iterations, 0) << name;
+    EXPECT_LE(r.solved.solution.synthesis.max_violation, 1e-6) << name;
+    EXPECT_NEAR(r.converted.surfaces.junction_radius, 500.0, 1e-9) << name;
     EXPECT_GT(r.seconds.total, 0.0) << name;
     // The converted profile's degree is R's degree + 4 (quartic quasi-uniform arcs, DESIGN §4.1).
-    EXPECT_EQ(r.conversion.curve.degree(), project.design.synthesis.degree + 4) << name;
+    EXPECT_EQ(r.converted.conversion.curve.degree(), project.design.synthesis.degree + 4) << name;
   }
 }
 
@@ -47,9 +47,9 @@ TEST(VesselJob, ToleranceOverrideIsMet) {
   for (double tolerance : {1e-2, 1e-4, 1e-6}) {
     project.tolerance = tolerance;
     const VesselJobResult r = run_vessel_job(project);
-    EXPECT_LE(r.conversion.max_radial_error, tolerance) << tolerance;
-    EXPECT_GE(static_cast<int>(r.conversion.arcs.size()), previous_arcs) << tolerance;
-    previous_arcs = static_cast<int>(r.conversion.arcs.size());
+    EXPECT_LE(r.converted.conversion.max_radial_error, tolerance) << tolerance;
+    EXPECT_GE(static_cast<int>(r.converted.conversion.arcs.size()), previous_arcs) << tolerance;
+    previous_arcs = static_cast<int>(r.converted.conversion.arcs.size());
   }
 }
 
@@ -58,14 +58,14 @@ TEST(VesselJob, ToleranceOverrideIsMet) {
 TEST(VesselJob, HemisphereStaysOnItsSphere) {
   const VesselJobResult r = run_vessel_job(load_example("hemispherical.xml"));
   const double R = 500.0;
-  EXPECT_LE(r.conversion.max_radial_error, 1e-3);
-  EXPECT_NEAR(r.solution.depth, R, 1e-7);
-  const NurbsCurve2d& c = r.conversion.curve;
+  EXPECT_LE(r.converted.conversion.max_radial_error, 1e-3);
+  EXPECT_NEAR(r.solved.solution.depth, R, 1e-7);
+  const NurbsCurve2d& c = r.converted.conversion.curve;
   double worst = 0.0;
   for (int k = 0; k <= 4000; ++k)
     worst = std::max(worst, std::abs(c(c.front() + (c.back() - c.front()) * k / 4000).norm() - R));
   EXPECT_LE(worst, 1e-7);
-  const NurbsSurface& head = r.surfaces.head;
+  const NurbsSurface& head = r.converted.surfaces.head;
   double worst_surface = 0.0, lowest = 0.0;
   for (int i = 0; i <= 36; ++i)
     for (int j = 0; j <= 90; ++j) {
@@ -77,7 +77,7 @@ TEST(VesselJob, HemisphereStaysOnItsSphere) {
   EXPECT_LE(worst_surface, 1e-7);
   EXPECT_GE(lowest, -1e-9);
   // The cylinder from z = 0 down to −length at radius R.
-  const NurbsSurface& cylinder = r.surfaces.cylinder;
+  const NurbsSurface& cylinder = r.converted.surfaces.cylinder;
   for (double u : {0.0, 0.3, 0.7})
     for (double v : {cylinder.front_v(), cylinder.back_v()}) {
       const Eigen::Vector3d p = cylinder(u, v);
@@ -92,7 +92,7 @@ TEST(VesselJob, HemisphereMembraneStressIsPROver2T) {
   const VesselJobResult r = run_vessel_job(load_example("hemispherical.xml"));
   const double sphere = 2.0 * 500 / (2 * 10), cylinder = 2.0 * 500 / 10;
   int head_samples = 0;
-  for (const StressSample& s : r.solution.stresses.samples) {
+  for (const StressSample& s : r.solved.solution.stresses.samples) {
     if (s.on_cylinder) {
       EXPECT_NEAR(s.hoop_stress, cylinder, 1e-12 * cylinder);
       EXPECT_NEAR(s.meridional_stress, sphere, 1e-12 * sphere);
@@ -103,22 +103,23 @@ TEST(VesselJob, HemisphereMembraneStressIsPROver2T) {
     EXPECT_NEAR(s.hoop_stress, sphere, 1e-9 * sphere) << s.theta;
   }
   EXPECT_EQ(head_samples, 181);
-  EXPECT_TRUE(r.solution.stresses.compressive_hoop.empty());
+  EXPECT_TRUE(r.solved.solution.stresses.compressive_hoop.empty());
 }
 
 // The 2:1 ellipsoidal example reproduces the ellipse (about 0.1 mm) and with it the known
 // compressive hoop band at the equator, N_θ = −pR there (σ = −pR/t = −100 MPa).
 TEST(VesselJob, EllipsoidalHeadHasTheCompressiveHoopBand) {
   const VesselJobResult r = run_vessel_job(load_example("ellipsoidal_2_1.xml"));
-  ASSERT_TRUE(r.solution.preset.has_value());
-  EXPECT_LE(r.solution.preset->max_deviation, 0.2);
-  ASSERT_EQ(r.solution.stresses.compressive_hoop.size(), 1u);
-  const CompressiveBand& band = r.solution.stresses.compressive_hoop.front();
+  ASSERT_TRUE(r.solved.solution.preset.has_value());
+  EXPECT_LE(r.solved.solution.preset->max_deviation, 0.2);
+  ASSERT_EQ(r.solved.solution.stresses.compressive_hoop.size(), 1u);
+  const CompressiveBand& band = r.solved.solution.stresses.compressive_hoop.front();
   EXPECT_EQ(band.theta_from, 0.0);
   EXPECT_NEAR(band.min_hoop_stress, -100.0, 1.0);
   // The band ends where r2 = 2 r1 (N_θ = 0), within 0.01 rad of where the exact ellipse's does.
-  ASSERT_EQ(r.solution.preset->stresses.compressive_hoop.size(), 1u);
-  EXPECT_NEAR(band.theta_to, r.solution.preset->stresses.compressive_hoop.front().theta_to, 0.01);
+  ASSERT_EQ(r.solved.solution.preset->stresses.compressive_hoop.size(), 1u);
+  EXPECT_NEAR(band.theta_to, r.solved.solution.preset->stresses.compressive_hoop.front().theta_to,
+              0.01);
 }
 
 TEST(VesselJob, InfeasibleDesignsAreInputErrors) {

@@ -1,0 +1,141 @@
+#include "jobs/cam/cam_report.h"
+
+#include <cmath>
+
+#include "jobs/report/conversion_report.h"
+#include "polarform_version.h"
+#include "src/units.h"
+
+namespace polarform {
+
+namespace {
+
+using json = nlohmann::ordered_json;
+
+json extremum(const Extremum& e, double scale, const char* unit) {
+  return json{{std::string("value_") + unit, e.value * scale},
+              {"at_deg", e.theta * kDegreesPerRadian}};
+}
+
+// The design: cam, segments and the continuity of the motion program.
+void add_design_fields(json& j, const CamDesignStage& r) {
+  const CamDesign& d = r.project.cam;
+  j["cam"] = {{"type", cam_type_name(d.type)},
+              {"follower", follower_kind_name(d.follower.kind)},
+              {"base_radius_mm", d.base_radius},
+              {"roller_radius_mm", d.follower.roller_radius},
+              {"offset_mm", d.follower.offset},
+              {"rotation", rotation_name(d.rotation)},
+              {"rpm", d.rpm}};
+  if (d.type == CamType::Cylindrical) {
+    j["cam"]["cylinder_radius_mm"] = d.cylinder_radius;
+    j["cam"]["z0_mm"] = d.z0;
+  }
+  j["segments"] = json::array();
+  for (const MotionSegment& s : r.program.segments())
+    j["segments"].push_back(
+        {{"name", s.name()},
+         {"kind", segment_kind_name(s.spec().kind)},
+         {"law", s.spec().kind == SegmentKind::Dwell ? "" : motion_law_name(s.spec().law)},
+         {"start_deg", s.start() * kDegreesPerRadian},
+         {"end_deg", s.end() * kDegreesPerRadian},
+         {"lift_mm", s.spec().lift}});
+  j["continuity"] = json::array();
+  for (const ContinuityIssue& i : r.continuity)
+    j["continuity"].push_back({{"angle_deg", i.angle * kDegreesPerRadian},
+                               {"derivative", i.derivative},
+                               {"jump_per_rad", i.jump()},
+                               {"message", i.message()}});
+}
+
+// The exact NURBS profile or track and the groove walls.
+void add_profile_fields(json& j, const CamDesignStage& d, const CamConversionStage& c) {
+  add_conversion_fields(j, c.conversion, c.degree(), c.control_points(), c.knot_count());
+  const auto* track = std::get_if<CylindricalTrack>(&c.profile);
+  if (!track || track->groove.empty()) return;
+  const GrooveSurface& g = track->groove.front();
+  j["groove"] = {{"depth_mm", d.project.cam.groove_depth},
+                 {"inner_radius_mm", g.surface.front_v()},
+                 {"outer_radius_mm", g.surface.back_v()},
+                 {"tolerance_mm", g.tolerance},
+                 {"walls", json::array()}};
+  for (const GrooveSurface& w : track->groove)
+    j["groove"]["walls"].push_back({{"side", w.side > 0 ? "+z" : "-z"},
+                                    {"degree_u", w.surface.degree_u()},
+                                    {"degree_v", w.surface.degree_v()},
+                                    {"control_points_u", w.surface.size_u()},
+                                    {"control_points_v", w.surface.size_v()},
+                                    {"arcs", w.base.arcs()},
+                                    {"height_degree_u", w.height.degree_u()},
+                                    {"height_degree_v", w.height.degree_v()},
+                                    {"max_error_mm", w.max_error},
+                                    {"height_fit_error_mm", w.fit_error},
+                                    {"samples", w.samples}});
+}
+
+// The analyses: pressure angle, radii of curvature, undercut, face width, SVAJ extremes, speed.
+void add_analysis_fields(json& j, const CamDesignStage& d, const CamAnalysisStage& r) {
+  if (const auto* p = std::get_if<PlateCamAnalysis>(&r.cam)) {
+    const CamAnalysis& a = p->analysis;
+    const auto finite_or_null = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
+    j["max_pressure_angle_deg"] = a.max_pressure_angle.value * kDegreesPerRadian;
+    j["max_pressure_angle_at_deg"] = a.max_pressure_angle.theta * kDegreesPerRadian;
+    j["min_radius_of_curvature_mm"] = a.min_convex_contour_radius.value;
+    j["min_radius_of_curvature_at_deg"] = a.min_convex_contour_radius.theta * kDegreesPerRadian;
+    j["min_concave_radius_of_curvature_mm"] = finite_or_null(a.min_concave_contour_radius.value);
+    j["min_pitch_radius_of_curvature_mm"] = finite_or_null(a.min_convex_pitch_radius.value);
+    j["undercut"] = !a.undercut.empty();
+    j["undercut_ranges_deg"] = json::array();
+    for (const AngleRange& u : a.undercut)
+      j["undercut_ranges_deg"].push_back({u.from * kDegreesPerRadian, u.to * kDegreesPerRadian});
+    if (a.face_width)
+      j["face_width_mm"] = {{"left", a.face_width->left}, {"right", a.face_width->right}};
+    j["motion"] = {{"max_velocity", extremum(a.motion.velocity, 1, "mm_per_rad")},
+                   {"max_acceleration", extremum(a.motion.acceleration, 1, "mm_per_rad2")},
+                   {"max_jerk", extremum(a.motion.jerk, 1, "mm_per_rad3")}};
+  } else {
+    j["max_pressure_angle_deg"] = r.max_pressure_angle().value * kDegreesPerRadian;
+    j["undercut"] = false;
+  }
+  j["speed_rad_per_s"] = angular_speed(d.project.cam.rpm);
+}
+
+// What the conversion left out and the degree-limited and capped profiles.
+void add_profile_extras(json& j, const CamConversionStage& c) {
+  j["warnings"] = c.warnings;
+  const auto* profile = std::get_if<PlateProfile>(&c.profile);
+  if (profile && profile->limited)
+    j["degree_limited"] = {{"degree", profile->limited->curve.degree()},
+                           {"control_points", profile->limited->control_points},
+                           {"max_radial_error_mm", profile->limited->max_radial_error},
+                           {"max_normal_error_mm", profile->limited->max_normal_error}};
+  if (profile && profile->capped)
+    j["exported_profile"] = {{"degree", profile->capped->curve.degree()},
+                             {"control_points", profile->capped->control_points},
+                             {"max_radial_error_mm", profile->capped->max_radial_error},
+                             {"reason", "the exact degree exceeds the project's max-degree"}};
+}
+
+}  // namespace
+
+json cam_report_fields(const CamDesignStage& design, const CamAnalysisStage& analysis,
+                       const CamConversionStage* conversion) {
+  json j;
+  add_design_fields(j, design);
+  if (conversion) add_profile_fields(j, design, *conversion);
+  add_analysis_fields(j, design, analysis);
+  if (conversion) add_profile_extras(j, *conversion);
+  return j;
+}
+
+json cam_report_json(const CamJobResult& r, const std::vector<std::string>& files) {
+  json j;
+  j["polarform_version"] = POLARFORM_VERSION;
+  j["command"] = "cam";
+  j.update(cam_report_fields(r.design, r.analysis, &r.conversion));
+  j["files"] = files;
+  j["seconds"] = r.seconds;
+  return j;
+}
+
+}  // namespace polarform

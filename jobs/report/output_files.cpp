@@ -1,0 +1,16 @@
+#include "jobs/report/output_files.h"
+
+#include <algorithm>
+
+namespace polarform {
+
+std::vector<std::string> report_file_list(const std::map<std::string, std::string>& content,
+                                          const std::vector<std::string>& reports) {
+  std::vector<std::string> files;
+  for (const auto& [name, text] : content)
+    if (std::find(reports.begin(), reports.end(), name) == reports.end()) files.push_back(name);
+  files.insert(files.end(), reports.begin(), reports.end());
+  return files;
+}
+
+}  // namespace polarform
