@@ -23,12 +23,12 @@ int main(int argc, char** argv) {
     const polarform::CamProject project = polarform::read_cam_project(argv[1], warnings);
     for (const std::string& warning : warnings) std::cerr << "warning: " << warning << '\n';
     const polarform::CamJobResult result = polarform::run_cam_job(project);
-    const polarform::PolarConversion& conversion = result.conversion;
+    const polarform::PolarConversion& conversion = result.conversion.conversion;
     std::cout << "polarform " << POLARFORM_VERSION << '\n'
               << "tolerance_mm " << conversion.tolerance << '\n'
               << "max_radial_error_mm " << conversion.max_radial_error << '\n'
-              << "control_points " << conversion.curve.size() << '\n'
-              << "degree " << conversion.curve.degree() << '\n';
+              << "control_points " << result.conversion.control_points() << '\n'
+              << "degree " << result.conversion.degree() << '\n';
   } catch (const polarform::InputError& e) {
     std::cerr << "polarform_consumer: " << e.what() << '\n';
     return 2;
