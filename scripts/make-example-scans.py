@@ -71,6 +71,22 @@ def vase(rng):
         "noise N(0, 0.02^2) mm per coordinate. x y z in mm."], rows)
 
 
+def lobed_profile(rng):
+    """A planar profile r(theta) = 25 + 3 cos 3theta + 1.5 sin 5theta mm about (4, -3)."""
+    rot, shift, sigma = rotation((1, 0, 0), math.radians(20)), (0, 10, 30), 0.01
+    rows = []
+    for _ in range(1500):
+        theta = rng.uniform(0, 2 * math.pi)
+        r = 25 + 3 * math.cos(3 * theta) + 1.5 * math.sin(5 * theta)
+        p = [4 + r * math.cos(theta), -3 + r * math.sin(theta), 0.0]
+        rows.append([v + rng.gauss(0, sigma) for v in place(p, rot, shift)])
+    write("lobed_profile.xyz", [
+        "polarform example scan (scripts/make-example-scans.py, seed 5): a planar profile,",
+        "r(theta) = 25 + 3 cos(3 theta) + 1.5 sin(5 theta) mm about the centre (4, -3) in the plane",
+        "z = 0, uniform in theta, turned 20 deg about x and moved by (0, 10, 30) mm;",
+        "noise N(0, 0.01^2) mm per coordinate. x y z in mm."], rows)
+
+
 def roller_cam_lift(theta):
     """s, ds/dtheta of examples/cams/roller.xml: dwell 0-90, cycloidal rise of 20 mm 90-180,
     dwell 180-240, 4-5-6-7 return 240-360 (Norton, Cam Design Handbook, ch. 3)."""
@@ -174,6 +190,7 @@ def main():
     vase(random.Random(2))
     cam_profile(random.Random(3))
     cam_plate(random.Random(4))
+    lobed_profile(random.Random(5))
     sphere_grid()
 
 

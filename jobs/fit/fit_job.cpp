@@ -37,19 +37,7 @@ std::string plane_text(const CloudPlane& p) {
   return s.str();
 }
 
-void fit_polar(FitJobResult& r, const FitJobOptions& o) {
-  PolarFitOptions po;
-  po.function = function_options(o);
-  po.closure = o.closure;
-  po.base_kind = o.base;
-  if (o.center) po.centre = r.plane.frame.to_local(*o.center).head<2>();
-  const Eigen::Matrix2Xd local = r.plane.frame.to_local(r.points).topRows(2);
-  r.polar = fit_polar_curve(local, po);
-  r.curve = curve_in_space(r.polar->curve, r.plane.frame);
-  r.method = "polar";
-}
-
-void fit_surface(FitJobResult& r, const FitJobOptions& o) {
+RotationalFitOptions rotational_options(const FitJobOptions& o) {
   RotationalFitOptions ro;
   ro.spherical.function = ro.cylindrical.function = function_options(o);
   ro.spherical.frame.origin = ro.cylindrical.frame.origin = o.center;
@@ -59,63 +47,55 @@ void fit_surface(FitJobResult& r, const FitJobOptions& o) {
   if (o.pole) ro.spherical.north = ro.spherical.south = *o.pole;
   if (o.method == FitJobMethod::spherical) ro.method = FitMethod::spherical;
   if (o.method == FitJobMethod::cylindrical) ro.method = FitMethod::cylindrical;
-  r.surface = fit_rotational(r.points, ro);
-  r.method = to_string(r.surface->method);
+  return ro;
 }
 
-FitJobResult run(Eigen::Matrix3Xd points, const std::string& name, const FitJobOptions& o,
-                 double read_seconds) {
-  StageClock clock;
-  FitJobResult r;
-  r.input = name;
-  r.points = std::move(points);
-  r.fairness = o.fairness;
-  r.fairness_weight = o.fairness_weight;
-  r.base = o.base;
+void check_options(const FitJobOptions& o) {
+  function_options(o);
   if (o.pole && *o.pole == PoleTreatment::cap && o.closure == Closure::open)
     throw InputError(
         "a pole cap closes a closed spherical fit: --pole cap needs --closed auto or yes");
-  r.plane = fit_plane(r.points, o.method == FitJobMethod::polar ? o.axis : std::nullopt);
-  const bool planar = r.plane.planar();
-  switch (o.method) {
-    case FitJobMethod::polar:
-      if (!planar)
-        throw InputError(name + ": --method polar needs a planar profile, but the points have " +
-                         plane_text(r.plane));
-      fit_polar(r, o);
-      r.reason = "polar fit requested (the points have " + plane_text(r.plane) + ")";
-      break;
-    case FitJobMethod::automatic:
-      if (planar) {
-        if (o.axis) r.plane = fit_plane(r.points, o.axis);
-        fit_polar(r, o);
-        r.reason = "the points have " + plane_text(r.plane) +
-                   ": a profile, polar curve fit (centre: " + r.polar->centre_reason + ")";
-        break;
-      }
-      fit_surface(r, o);
-      r.reason = r.surface->reason;
-      break;
-    case FitJobMethod::spherical:
-    case FitJobMethod::cylindrical:
-      fit_surface(r, o);
-      r.reason = r.surface->reason;
-      break;
-  }
-  if (r.surface) {
-    FitReport& rep =
-        r.surface->spherical ? r.surface->spherical->report : r.surface->cylindrical->report;
-    rep.times.read = read_seconds;
-    rep.times.total += read_seconds;
-  } else {
-    r.polar->report.times.read = read_seconds;
-    r.polar->report.times.total += read_seconds;
-  }
-  r.seconds = read_seconds + clock.lap();
-  return r;
+}
+
+// The plane the method choice looks at: with --method polar an axis is the plane's normal.
+CloudPlane choice_plane(const FitInput& in, const FitJobOptions& o) {
+  return fit_plane(in.points, o.method == FitJobMethod::polar ? o.axis : std::nullopt);
+}
+
+// Whether the polar method runs: asked for (the points must then be planar), or automatic on a
+// planar cloud.
+bool runs_polar(const FitInput& in, const CloudPlane& plane, const FitJobOptions& o) {
+  if (o.method == FitJobMethod::polar && !plane.planar())
+    throw InputError(in.file.string() +
+                     ": --method polar needs a planar profile, but the points have " +
+                     plane_text(plane));
+  return o.method == FitJobMethod::polar || (o.method == FitJobMethod::automatic && plane.planar());
+}
+
+ProfileFit fit_profile(const FitInput& in, const CloudPlane& plane, const FitJobOptions& o) {
+  PolarFitOptions po;
+  po.function = function_options(o);
+  po.closure = o.closure;
+  po.base_kind = o.base;
+  if (o.center) po.centre = plane.frame.to_local(*o.center).head<2>();
+  const Eigen::Matrix2Xd local = plane.frame.to_local(in.points).topRows(2);
+  PolarCurveFit polar = fit_polar_curve(local, po);
+  NurbsCurve3d curve = curve_in_space(polar.curve, plane.frame);
+  return {std::move(polar), std::move(curve)};
+}
+
+FitReport& report_of(std::variant<ProfileFit, RotationalFit>& fit) {
+  if (auto* p = std::get_if<ProfileFit>(&fit)) return p->polar.report;
+  RotationalFit& s = std::get<RotationalFit>(fit);
+  return s.spherical ? s.spherical->report : s.cylindrical->report;
 }
 
 }  // namespace
+
+const FitReport& FitJobResult::report() const {
+  if (const auto* p = std::get_if<ProfileFit>(&fit)) return p->polar.report;
+  return std::get<RotationalFit>(fit).report();
+}
 
 FitJobOptions fit_job_options(const FitProject& p) {
   FitJobOptions o;
@@ -135,20 +115,74 @@ FitJobOptions fit_job_options(const FitProject& p) {
   return o;
 }
 
-FitJobResult run_fit_job(const std::filesystem::path& scan, const FitJobOptions& o) {
+FitInput read_fit_input(const std::filesystem::path& scan, const FitJobOptions& o) {
   StageClock clock;
   ReadOptions ro;
   ro.skip_bad = o.skip_bad;
   ro.progress = o.read_progress;
   PointCloud cloud = read_point_cloud(scan, ro);
-  const double read_seconds = clock.lap();
-  FitJobResult r = run(std::move(cloud.points), scan.string(), o, read_seconds);
-  r.dropped = cloud.dropped;
-  return r;
+  return {scan, std::move(cloud.points), cloud.dropped, clock.lap()};
+}
+
+FitPreview preview_fit(const FitInput& in, const FitJobOptions& o) {
+  check_options(o);
+  FitPreview p;
+  p.plane = choice_plane(in, o);
+  p.profile = runs_polar(in, p.plane, o);
+  if (p.profile) return p;
+  try {
+    p.frame = estimate_frame(in.points, rotational_options(o).spherical.frame);
+  } catch (const InputError& e) {
+    p.frame_error = std::string("local frame: ") + e.what();
+  }
+  return p;
+}
+
+FitJobResult fit_cloud(FitInput in, const FitJobOptions& o) {
+  StageClock clock;
+  check_options(o);
+  CloudPlane plane = choice_plane(in, o);
+  const bool polar = runs_polar(in, plane, o);
+  // Automatic on a planar cloud: a given axis is the profile plane's normal.
+  if (polar && o.method == FitJobMethod::automatic && o.axis) plane = fit_plane(in.points, o.axis);
+  std::variant<ProfileFit, RotationalFit> fit =
+      polar ? std::variant<ProfileFit, RotationalFit>(fit_profile(in, plane, o))
+            : std::variant<ProfileFit, RotationalFit>(
+                  fit_rotational(in.points, rotational_options(o)));
+  std::string method, reason;
+  if (const auto* p = std::get_if<ProfileFit>(&fit)) {
+    method = "polar";
+    reason = o.method == FitJobMethod::polar
+                 ? "polar fit requested (the points have " + plane_text(plane) + ")"
+                 : "the points have " + plane_text(plane) +
+                       ": a profile, polar curve fit (centre: " + p->polar.centre_reason + ")";
+  } else {
+    const RotationalFit& s = std::get<RotationalFit>(fit);
+    method = to_string(s.method);
+    reason = s.reason;
+  }
+  FitReport& rep = report_of(fit);
+  rep.times.read = in.read_seconds;
+  rep.times.total += in.read_seconds;
+  return {std::move(in.file),
+          std::move(in.points),
+          in.dropped,
+          std::move(method),
+          std::move(reason),
+          std::move(plane),
+          std::move(fit),
+          o.fairness,
+          o.fairness_weight,
+          o.base,
+          in.read_seconds + clock.lap()};
+}
+
+FitJobResult run_fit_job(const std::filesystem::path& scan, const FitJobOptions& o) {
+  return fit_cloud(read_fit_input(scan, o), o);
 }
 
 FitJobResult run_fit_job(Eigen::Matrix3Xd points, const std::string& name, const FitJobOptions& o) {
-  return run(std::move(points), name, o, 0.0);
+  return fit_cloud(FitInput{name, std::move(points), 0, 0.0}, o);
 }
 
 }  // namespace polarform

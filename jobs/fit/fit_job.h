@@ -1,7 +1,9 @@
-// The fit job: what `polarform fit` (and the studio) computes for a scanned point cloud — read it,
-// decide the method (a planar cloud is a profile: polar curve fitting, Bae 2002 ch. 2; otherwise
-// the best-fit quadric chooses spherical or cylindrical surface fitting, ch. 3 and §4.3), fit, and
-// keep the measured point-to-geometry error of every input point. Computing writes nothing.
+// The fit job: what `polarform fit` and the studio compute for a scanned point cloud, as a staged
+// pipeline — read it; preview what decides the method (a planar cloud is a profile: polar curve
+// fitting, Bae 2002 ch. 2; otherwise the best-fit quadric chooses spherical or cylindrical surface
+// fitting, ch. 3 and §4.3); fit, keeping the measured point-to-geometry error of every input
+// point. The result value is what the studio shows and what the output bundle writes. Computing
+// writes nothing.
 #pragma once
 
 #include <Eigen/Core>
@@ -9,6 +11,7 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <variant>
 
 #include "designers/scan/cloud_plane.h"
 #include "jobs/project/fit_project.h"
@@ -36,32 +39,66 @@ struct FitJobOptions {
   ProgressFn fit_progress;   // fraction of the fit done (restarts when auto tries a second method)
 };
 
+// Stage 1: the scan as read (bad records dropped with skip_bad).
+struct FitInput {
+  std::filesystem::path file;  // the scan, or the name of a cloud given in memory
+  Eigen::Matrix3Xd points;
+  std::size_t dropped = 0;
+  double read_seconds = 0.0;
+};
+
+// Stage 2: what decides the method before anything is fitted — the cloud's best-fit plane (a
+// planar cloud is a profile: polar curve fitting) and, for a cloud that is not planar, the local
+// frame the surface fits start from (Bae 2002, §4.3), or why there is none.
+struct FitPreview {
+  CloudPlane plane;
+  bool profile = false;                // the polar method will run
+  std::optional<FrameEstimate> frame;  // surfaces: the estimated (or given) frame and quadric
+  std::string frame_error;             // surfaces: why no frame could be estimated
+};
+
+// A polar profile fit: the curve in the profile plane's coordinates, and placed back in space.
+struct ProfileFit {
+  PolarCurveFit polar;
+  NurbsCurve3d curve;
+};
+
+// Stage 3: the fit and the measured point-to-geometry error of every input point.
 struct FitJobResult {
   std::filesystem::path input;
   Eigen::Matrix3Xd points;  // as read (bad records dropped with skip_bad)
   std::size_t dropped = 0;
-  std::string method;                  // "polar", "spherical" or "cylindrical"
-  std::string reason;                  // why that method
-  CloudPlane plane;                    // best-fit plane of the cloud (the profile plane when polar)
-  std::optional<PolarCurveFit> polar;  // in plane coordinates
-  std::optional<NurbsCurve3d> curve;   // the polar curve placed back in space
-  std::optional<RotationalFit> surface;
+  std::string method;  // "polar", "spherical" or "cylindrical"
+  std::string reason;  // why that method
+  CloudPlane plane;    // best-fit plane of the cloud (the profile plane when polar)
+  std::variant<ProfileFit, RotationalFit> fit;
   FairnessOptions::Mode fairness = FairnessOptions::Mode::relative;  // as asked
   double fairness_weight = 1e-7;
   ArcKind base = ArcKind::rqb;
   double seconds = 0.0;  // read + fit
 
-  const FitReport& report() const { return polar ? polar->report : surface->report(); }
+  bool profile() const { return std::holds_alternative<ProfileFit>(fit); }
+  const FitReport& report() const;
 };
 
 // The options a fit project asks for (progress callbacks and threads left at their defaults).
 FitJobOptions fit_job_options(const FitProject& project);
 
-// Throws InputError (unreadable or bad file, bad options, data the method cannot fit) or
-// NumericalError (a tolerance that cannot be met) with a message naming the cause.
+// Throws InputError for an unreadable or bad file.
+FitInput read_fit_input(const std::filesystem::path& scan, const FitJobOptions& options = {});
+
+// Throws InputError for bad options or a cloud the plane cannot be fitted to; a frame that cannot
+// be estimated is reported in frame_error.
+FitPreview preview_fit(const FitInput& input, const FitJobOptions& options = {});
+
+// Throws InputError (bad options, data the method cannot fit) or NumericalError (a tolerance that
+// cannot be met) with a message naming the cause.
+FitJobResult fit_cloud(FitInput input, const FitJobOptions& options = {});
+
+// All stages: read_fit_input, then fit_cloud.
 FitJobResult run_fit_job(const std::filesystem::path& scan, const FitJobOptions& options = {});
 
-// The same on a cloud already in memory (`name` is reported as the input).
+// fit_cloud on a cloud already in memory (`name` is reported as the input).
 FitJobResult run_fit_job(Eigen::Matrix3Xd points, const std::string& name,
                          const FitJobOptions& options = {});
 

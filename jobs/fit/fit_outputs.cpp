@@ -96,18 +96,28 @@ json times_json(const StageTimes& t) {
               {"total", t.total}};
 }
 
+// The bundle's files as the report lists them: the rendered ones and deviation.ply (written
+// apart, as binary), by name.
+std::vector<std::string> fit_file_list(const std::map<std::string, std::string>& content) {
+  std::vector<std::string> files = {"deviation.ply", "report.html", "report.json"};
+  for (const auto& [file, text] : content)
+    if (file != "report.html" && file != "report.json") files.push_back(file);
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
 std::string um(double mm) { return format_trimmed(mm * 1e3, 3) + " µm"; }
 
 std::string html_report(const FitJobResult& r, const json& report, const std::string& preview) {
   const FitReport& rep = r.report();
   HtmlReport html("polarform fit report: " + r.input.filename().string());
-  const bool curve = r.polar.has_value();
-  const std::string degrees = curve ? std::to_string(r.curve->degree())
-                                    : "(" + std::to_string(rep.nurbs_degree_u) + ", " +
-                                          std::to_string(rep.nurbs_degree_v) + ")";
+  const ProfileFit* profile = std::get_if<ProfileFit>(&r.fit);
+  const std::string degrees = profile ? std::to_string(profile->curve.degree())
+                                      : "(" + std::to_string(rep.nurbs_degree_u) + ", " +
+                                            std::to_string(rep.nurbs_degree_v) + ")";
   const std::string net =
-      curve ? std::to_string(r.curve->size())
-            : std::to_string(rep.nurbs_size_u) + " × " + std::to_string(rep.nurbs_size_v);
+      profile ? std::to_string(profile->curve.size())
+              : std::to_string(rep.nurbs_size_u) + " × " + std::to_string(rep.nurbs_size_v);
   html.add_key_figures({{"method", r.method},
                         {"points", std::to_string(r.points.cols())},
                         {"NURBS degree", degrees},
@@ -145,16 +155,14 @@ std::string html_report(const FitJobResult& r, const json& report, const std::st
 
 double deviation_color_limit(const FitJobResult& r) { return std::max(r.report().error.p99, 1e-9); }
 
-json fit_report_json(const FitJobResult& r, const std::vector<std::string>& files) {
+json fit_report_fields(const FitJobResult& r) {
   const FitReport& rep = r.report();
   json j;
-  j["polarform_version"] = POLARFORM_VERSION;
-  j["command"] = "fit";
   j["input"] = {{"file", r.input.string()}, {"points", r.points.cols()}, {"dropped", r.dropped}};
   j["method"] = r.method;
   j["reason"] = r.reason;
-  if (r.polar) {
-    const PolarCurveFit& f = *r.polar;
+  if (const ProfileFit* profile = std::get_if<ProfileFit>(&r.fit)) {
+    const PolarCurveFit& f = profile->polar;
     j["quadric"] = nullptr;
     j["frame"] = frame_json(r.plane.frame,
                             r.plane.snapped ? "the plane z = const of the input (x, y kept)"
@@ -165,11 +173,11 @@ json fit_report_json(const FitJobResult& r, const std::vector<std::string>& file
     j["centre_reason"] = f.centre_reason;
     j["closed"] = f.closed;
     j["degrees"] = {{"F", json::array({rep.degree_v})},
-                    {"nurbs", json::array({r.curve->degree()})}};
+                    {"nurbs", json::array({profile->curve.degree()})}};
     j["control_net"] = {{"F", json::array({rep.size_v})},
-                        {"nurbs", json::array({r.curve->size()})}};
+                        {"nurbs", json::array({profile->curve.size()})}};
   } else {
-    const RotationalFit& f = *r.surface;
+    const RotationalFit& f = std::get<RotationalFit>(r.fit);
     const FrameEstimate& fr = f.frame();
     j["quadric"] = fr.quadric ? quadric_json(*fr.quadric) : json(nullptr);
     j["frame"] = frame_json(fr.frame, fr.reason);
@@ -204,15 +212,23 @@ json fit_report_json(const FitJobResult& r, const std::vector<std::string>& file
   j["error_kind"] = "true closest-point distance from each input point to the fitted geometry";
   j["radial_error_mm"] = stats(rep.radial);
   j["deviation_color_limit_mm"] = deviation_color_limit(r);
-  j["timings_s"] = times_json(rep.times);
+  return j;
+}
+
+json fit_report_json(const FitJobResult& r, const std::vector<std::string>& files) {
+  json j;
+  j["polarform_version"] = POLARFORM_VERSION;
+  j["command"] = "fit";
+  j.update(fit_report_fields(r));
+  j["timings_s"] = times_json(r.report().times);
   j["files"] = files;
   return j;
 }
 
-std::vector<std::string> write_fit_outputs(const FitJobResult& r,
-                                           const std::filesystem::path& dir) {
+std::map<std::string, std::string> render_fit_outputs(const FitJobResult& r) {
   std::map<std::string, std::string> content;
-  const std::string stem = r.polar ? "curve" : "surface";
+  const ProfileFit* profile = std::get_if<ProfileFit>(&r.fit);
+  const std::string stem = profile ? "curve" : "surface";
   const std::string name = r.input.stem().string();
   IgesHeader iges;
   iges.description = "polarform " + std::string(POLARFORM_VERSION) + " " + r.method + " fit of " +
@@ -224,19 +240,20 @@ std::vector<std::string> write_fit_outputs(const FitJobResult& r,
   IgesWriter igs;
   StepWriter stp(name);
   X3dWriter x3d;
-  if (r.polar) {
-    igs.add(*r.curve, "FITTED CURVE");
-    stp.add(*r.curve, "fitted curve");
-    x3d.add(*r.curve, "curve");
-    DxfWriter dxf(DxfOptions{std::max(10, r.curve->degree()), 1e-6});
-    dxf.add(*r.curve, "FITTED_CURVE");
+  if (profile) {
+    igs.add(profile->curve, "FITTED CURVE");
+    stp.add(profile->curve, "fitted curve");
+    x3d.add(profile->curve, "curve");
+    DxfWriter dxf(DxfOptions{std::max(10, profile->curve.degree()), 1e-6});
+    dxf.add(profile->curve, "FITTED_CURVE");
     content["curve.dxf"] = dxf.str();
   } else {
-    igs.add(r.surface->surface(), "FITTED SURFACE");
-    stp.add(r.surface->surface(), "fitted surface");
-    x3d.add(r.surface->surface(), "surface");
-    if (r.surface->spherical) {
-      const SphericalFit& s = *r.surface->spherical;
+    const RotationalFit& surface = std::get<RotationalFit>(r.fit);
+    igs.add(surface.surface(), "FITTED SURFACE");
+    stp.add(surface.surface(), "fitted surface");
+    x3d.add(surface.surface(), "surface");
+    if (surface.spherical) {
+      const SphericalFit& s = *surface.spherical;
       const std::pair<const std::optional<PoleCap>*, std::string> caps[] = {
           {&s.north_cap, "north"}, {&s.south_cap, "south"}};
       for (const auto& [cap, which] : caps)
@@ -253,7 +270,16 @@ std::vector<std::string> write_fit_outputs(const FitJobResult& r,
       x3d.str("polarform " + r.method + " fit of " + r.input.filename().string());
   const std::string preview = svg_document(fit_preview_figure(r));
   content["preview.svg"] = preview;
+  const std::vector<std::string> files = fit_file_list(content);
+  const json report = fit_report_json(r, files);
+  content["report.json"] = report.dump(2) + "\n";
+  content["report.html"] = html_report(r, report, preview);
+  return content;
+}
 
+std::vector<std::string> write_fit_outputs(const FitJobResult& r,
+                                           const std::filesystem::path& dir) {
+  const std::map<std::string, std::string> content = render_fit_outputs(r);
   const Eigen::VectorXd& d = r.report().signed_distance;
   if (d.size() != r.points.cols())
     throw NumericalError("fit: " + std::to_string(d.size()) + " deviations for " +
@@ -265,20 +291,9 @@ std::vector<std::string> write_fit_outputs(const FitJobResult& r,
     colors[static_cast<std::size_t>(k)] = to_rgb8(diverging_color(d[k], limit));
     deviation[static_cast<std::size_t>(k)] = d[k];
   }
-
-  std::vector<std::string> files;
-  for (const auto& [file, text] : content) files.push_back(file);
-  files.push_back("deviation.ply");
-  files.push_back("report.html");
-  files.push_back("report.json");
-  std::sort(files.begin(), files.end());
-  const json report = fit_report_json(r, files);
-  content["report.json"] = report.dump(2) + "\n";
-  content["report.html"] = html_report(r, report, preview);
-
   write_files_atomically(dir, content);
   write_ply(dir / "deviation.ply", r.points, &colors, &deviation, "deviation");
-  return files;
+  return fit_file_list(content);
 }
 
 }  // namespace polarform

@@ -61,7 +61,7 @@ void histogram_panel(Plot& p, const Eigen::VectorXd& d, double limit) {
 }
 
 Figure polar_preview(const FitJobResult& r) {
-  const PolarCurveFit& f = *r.polar;
+  const PolarCurveFit& f = std::get<ProfileFit>(r.fit).polar;
   const FitReport& rep = f.report;
   Figure fig(800, 1000);
   fig.title = "Polar curve fit of " + r.input.filename().string() + ": rms " + mm(rep.error.rms);
@@ -101,7 +101,7 @@ Figure polar_preview(const FitJobResult& r) {
 }
 
 Figure surface_preview(const FitJobResult& r) {
-  const RotationalFit& f = *r.surface;
+  const RotationalFit& f = std::get<RotationalFit>(r.fit);
   const FitReport& rep = f.report();
   Figure fig(800, 1100);
   fig.title = (f.method == FitMethod::spherical ? "Spherical" : "Cylindrical") +
@@ -143,7 +143,7 @@ int marker_stride(Eigen::Index n, int limit) {
 }
 
 Figure fit_preview_figure(const FitJobResult& r) {
-  return r.polar ? polar_preview(r) : surface_preview(r);
+  return r.profile() ? polar_preview(r) : surface_preview(r);
 }
 
 }  // namespace polarform

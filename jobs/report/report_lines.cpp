@@ -6,6 +6,20 @@ namespace polarform {
 
 namespace {
 
+// A text on one line: backslashes and line breaks escaped as \\ and \n.
+std::string one_line(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '\\')
+      out += "\\\\";
+    else if (c == '\n')
+      out += "\\n";
+    else
+      out += c;
+  }
+  return out;
+}
+
 void append(std::string& out, const nlohmann::ordered_json& value, const std::string& name) {
   if (value.is_object()) {
     for (const auto& [key, child] : value.items())
@@ -18,7 +32,7 @@ void append(std::string& out, const nlohmann::ordered_json& value, const std::st
     if (value.is_number_float())
       out += format_round_trip(value.get<double>());
     else if (value.is_string())
-      out += value.get<std::string>();
+      out += one_line(value.get<std::string>());
     else
       out += value.dump();
     out += "\n";

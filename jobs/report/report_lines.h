@@ -1,6 +1,7 @@
 // A report's fields as "name=value" lines, one per scalar, for the studio's script mode and the
 // tests that compare it with report.json: nested names joined by '.', array elements by their
-// index ("arc_list.3.sweep_deg"); numbers as the shortest text that reads back exactly.
+// index ("arc_list.3.sweep_deg"); numbers as the shortest text that reads back exactly, texts on
+// one line (backslashes and line breaks escaped as \\ and \n).
 #pragma once
 
 #include <nlohmann/json.hpp>

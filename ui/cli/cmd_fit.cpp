@@ -108,9 +108,9 @@ void run(const FitArgs& a) {
   if (a.quiet) return;
   const FitReport& rep = r.report();
   std::printf("%s fit: %s\n", r.method.c_str(), r.reason.c_str());
-  if (r.polar)
+  if (const ProfileFit* profile = std::get_if<ProfileFit>(&r.fit))
     std::printf("F degree %d, %d control values; NURBS curve degree %d, %d control points\n",
-                rep.degree_v, rep.size_v, r.curve->degree(), r.curve->size());
+                rep.degree_v, rep.size_v, profile->curve.degree(), profile->curve.size());
   else
     std::printf(
         "F degree (%d, %d), %d x %d control values; NURBS surface degree (%d, %d), %d x %d control "

@@ -35,13 +35,14 @@ bool optional_vector(const char* label, std::optional<Eigen::Vector3d>& value,
 bool draw_fit_options(FitSettings& s) {
   bool changed = false;
   ImGui::PushItemWidth(ImGui::GetFontSize() * 9);
-  static constexpr std::array<std::string_view, 3> kMethods = {"automatic (quadric type)",
-                                                               "spherical", "cylindrical"};
+  static constexpr std::array<std::string_view, 4> kMethods = {
+      "automatic", "polar profile", "spherical", "cylindrical"};  // FitJobMethod's order
   changed |= combo("method", s.method, kMethods);
   help_marker(
-      "Automatic: sphere-like quadrics are fitted spherically, cylinder-like ones cylindrically; "
-      "where the "
-      "type does not decide, both are fitted and the smaller error wins (Bae 2002, §4.3).");
+      "Automatic: a planar cloud is a profile, fitted by a polar curve about its centre (Bae "
+      "2002, ch. 2); otherwise sphere-like quadrics are fitted spherically, cylinder-like ones "
+      "cylindrically, and where the type does not decide both are fitted and the smaller error "
+      "wins (§4.3).");
   changed |= input_int("degree along u", s.degree_u, 1, 7);
   changed |= input_int("degree along v", s.degree_v, 1, 7);
   changed |= ImGui::Checkbox("refine to a tolerance", &s.use_tolerance);

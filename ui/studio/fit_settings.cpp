@@ -4,43 +4,9 @@
 
 namespace polarform::studio {
 
-RotationalFitOptions to_fit_options(const FitSettings& s, int threads) {
-  FunctionFitOptions f;
-  f.degree_u = s.degree_u;
-  f.degree_v = s.degree_v;
-  if (s.use_tolerance) {
-    f.tolerance = s.tolerance;
-    f.measure = static_cast<ToleranceMeasure>(s.measure);
-  } else {
-    f.size_u = s.size_u;
-    f.size_v = s.size_v;
-  }
-  f.fairness.mode = static_cast<FairnessOptions::Mode>(s.fairness);
-  f.fairness.weight = s.fairness_weight;
-  f.threads = threads;
-  RotationalFitOptions o;
-  o.spherical.function = f;
-  o.cylindrical.function = f;
-  o.spherical.frame.quadric.threads = threads;
-  o.cylindrical.frame.quadric.threads = threads;
-  const ArcKind base = s.quartic_base ? ArcKind::quartic : ArcKind::rqb;
-  o.spherical.base_kind = o.cylindrical.base_kind = base;
-  o.spherical.closure = o.cylindrical.closure = static_cast<Closure>(s.closure);
-  o.spherical.north = o.spherical.south = static_cast<PoleTreatment>(s.pole);
-  o.spherical.frame.origin = o.cylindrical.frame.origin = s.center;
-  o.spherical.frame.axis = o.cylindrical.frame.axis = s.axis;
-  if (s.method == 1) o.method = FitMethod::spherical;
-  if (s.method == 2) o.method = FitMethod::cylindrical;
-  return o;
-}
-
-FitSettings fit_settings(const FitProject& p, std::vector<std::string>& ignored) {
+FitSettings fit_settings(const FitProject& p) {
   FitSettings s;
-  s.method = p.method == FitJobMethod::spherical     ? 1
-             : p.method == FitJobMethod::cylindrical ? 2
-                                                     : 0;
-  if (p.method == FitJobMethod::polar)
-    ignored.push_back("method 'polar' (the studio fits surfaces; use polarform fit for profiles)");
+  s.method = static_cast<int>(p.method);
   s.closure = static_cast<int>(p.closure);
   if (p.pole) s.pole = static_cast<int>(*p.pole);
   if (p.degree) s.degree_u = p.degree->first, s.degree_v = p.degree->second;
@@ -60,9 +26,7 @@ FitSettings fit_settings(const FitProject& p, std::vector<std::string>& ignored)
 FitProject fit_project(const FitSettings& s, const std::filesystem::path& scan) {
   FitProject p;
   p.scan = scan;
-  p.method = s.method == 1   ? FitJobMethod::spherical
-             : s.method == 2 ? FitJobMethod::cylindrical
-                             : FitJobMethod::automatic;
+  p.method = static_cast<FitJobMethod>(s.method);
   p.closure = static_cast<Closure>(s.closure);
   if (static_cast<PoleTreatment>(s.pole) != PoleTreatment::automatic)
     p.pole = static_cast<PoleTreatment>(s.pole);

@@ -1,24 +1,20 @@
-// The surface-fit options of the fit workspace — method (automatic from the quadric, spherical,
-// cylindrical), degrees, a tolerance or a fixed control net, fairness, base arcs, closure, pole
-// treatment and an optional frame origin and axis instead of the estimated ones — their
-// translation into the fitter's RotationalFitOptions, and their exchange with fit project files
-// (jobs/project/fit_project.h).
+// The fit options of the fit workspace as its panel edits them — method (automatic, polar profile,
+// spherical, cylindrical), degrees, a tolerance or a fixed control net (both values kept while the
+// other is chosen), fairness, base arcs, closure, pole treatment and an optional frame origin and
+// axis instead of the estimated ones — and their exchange with fit projects
+// (jobs/project/fit_project.h), from which the fit job takes its options.
 #pragma once
 
 #include <Eigen/Core>
-
 #include <filesystem>
 #include <optional>
-#include <string>
-#include <vector>
 
 #include "jobs/project/fit_project.h"
-#include "src/fit/rotational_fit.h"
 
 namespace polarform::studio {
 
 struct FitSettings {
-  int method = 0;  // 0 automatic, 1 spherical, 2 cylindrical
+  int method = 0;  // FitJobMethod: 0 automatic, 1 polar, 2 spherical, 3 cylindrical
   int degree_u = 3, degree_v = 3;
   // Off by default, as in `polarform fit`: a fixed 12 x 12 net always fits, whereas any default
   // tolerance is below the noise of some scan.
@@ -38,11 +34,8 @@ struct FitSettings {
   bool operator==(const FitSettings&) const = default;
 };
 
-RotationalFitOptions to_fit_options(const FitSettings& settings, int threads);
-
-// The settings a fit project asks for; `ignored` gets a note for each project field the studio's
-// surface fit does not use (the polar method).
-FitSettings fit_settings(const FitProject& project, std::vector<std::string>& ignored);
+// The settings a fit project asks for.
+FitSettings fit_settings(const FitProject& project);
 
 // The fit project for these settings and this scan path.
 FitProject fit_project(const FitSettings& settings, const std::filesystem::path& scan);

@@ -8,11 +8,9 @@
 #include <numbers>
 #include <sstream>
 
-#include "export/iges_writer.h"
-#include "export/step_writer.h"
-#include "export/x3d_writer.h"
+#include "export/atomic_file.h"
 #include "jobs/fit/fit_outputs.h"
-#include "src/io/point_cloud.h"
+#include "jobs/report/report_lines.h"
 #include "src/number_text.h"
 #include "ui/studio/colors.h"
 #include "ui/studio/guarded.h"
@@ -27,30 +25,23 @@ constexpr float kSurfaceRgb[3] = {0.78f, 0.74f, 0.66f};
 constexpr float kNetRgb[3] = {0.2f, 0.2f, 0.25f};
 constexpr int kThreads = 2;
 
-LoadedCloud load_cloud(const std::filesystem::path& file, TaskControl& control) {
-  LoadedCloud c;
-  c.file = file;
-  const auto start = std::chrono::steady_clock::now();
-  ReadOptions read;
-  read.skip_bad = true;
-  read.progress = [&control](double f) { control.report(0.8 * f); };
-  PointCloud cloud = read_point_cloud(file, read);
-  c.read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  c.points = std::move(cloud.points);
-  c.dropped = cloud.dropped;
+// The fit job's read and preview stages, and the cloud as the 3D view draws it.
+LoadedCloud load_cloud(const std::filesystem::path& file, FitJobOptions options,
+                       TaskControl& control) {
+  options.skip_bad = true;  // the studio skips bad records and says how many
+  options.read_progress = [&control](double f) { control.report(0.8 * f); };
+  LoadedCloud c{read_fit_input(file, options), std::nullopt, {}, {}, {}};
   control.report(0.85);
   try {
-    FrameOptions options;
-    options.quadric.threads = kThreads;
-    c.frame = estimate_frame(c.points, options);
+    c.preview = preview_fit(c.input, options);
   } catch (const TaskCancelled&) {
     throw;
   } catch (...) {
-    c.frame_error = failure_text("local frame", std::current_exception());
+    c.preview_error = failure_text("Fit preview", std::current_exception());
   }
   control.report(0.95);
-  c.bounds = bounds_of(c.points);
-  c.display = make_point_set(c.points, c.bounds.center(), kCloudRgb);
+  c.bounds = bounds_of(c.input.points);
+  c.display = make_point_set(c.input.points, c.bounds.center(), kCloudRgb);
   return c;
 }
 
@@ -65,14 +56,14 @@ std::string text_of(const Eigen::Vector3d& v) {
 FitWorkspace::FitWorkspace(StudioContext& context) : Workspace(context) {}
 
 std::string FitWorkspace::document_name() const {
-  if (cloud_) return cloud_->file.filename().string();
+  if (cloud_) return cloud_->input.file.filename().string();
   return loading_.empty() ? "no point cloud" : loading_.filename().string();
 }
 
 bool FitWorkspace::save(const std::filesystem::path& file) {
   if (!cloud_) return false;
   // The scan relative to the project when it lies below the project's folder, else absolute.
-  const std::filesystem::path scan = std::filesystem::absolute(cloud_->file);
+  const std::filesystem::path scan = std::filesystem::absolute(cloud_->input.file);
   const std::filesystem::path relative =
       scan.lexically_relative(std::filesystem::absolute(file).parent_path());
   const bool below = !relative.empty() && *relative.begin() != "..";
@@ -98,18 +89,19 @@ bool FitWorkspace::open(const std::filesystem::path& file, bool) {
                  [&] { project = read_fit_project(file, notes); }))
       return false;
     for (const std::string& note : notes) log().warning(note);
-    std::vector<std::string> ignored;
-    settings_ = fit_settings(project, ignored);
-    for (const std::string& field : ignored)
-      log().warning(file.filename().string() + ": not used by the studio: " + field);
+    settings_ = fit_settings(project);
     cloud = scan_path(project, file);
     project_path_ = file;
+  } else {  // a bare cloud: the options of `polarform fit CLOUD`
+    settings_ = FitSettings{};
   }
   saved_settings_ = settings_;
   history_.reset(settings_);
   fit_task_.cancel();
   loading_ = cloud;
-  load_task_.start([cloud](TaskControl& control) { return load_cloud(cloud, control); });
+  load_task_.start([cloud, options = job_options()](TaskControl& control) {
+    return load_cloud(cloud, options, control);
+  });
   log().info("Reading " + cloud.string());
   return true;
 }
@@ -120,15 +112,16 @@ void FitWorkspace::update() {
       cloud_ = std::make_shared<const LoadedCloud>(std::move(*outcome->value));
       fit_.reset();
       fit_error_.clear();
-      std::ostringstream msg;
-      msg << "Read " << cloud_->points.cols() << " points from " << cloud_->file.filename().string()
-          << " in " << cloud_->read_seconds << " s";
-      if (cloud_->dropped) msg << " (" << cloud_->dropped << " bad records skipped)";
-      log().info(msg.str());
-      if (cloud_->dropped)
-        log().warning(cloud_->file.filename().string() + ": skipped " +
-                      std::to_string(cloud_->dropped) + " bad records");
-      if (!cloud_->frame_error.empty()) log().warning(cloud_->frame_error);
+      const FitInput& in = cloud_->input;
+      log().info("Read " + std::to_string(in.points.cols()) + " points from " +
+                 in.file.filename().string() + " in " + number_text(in.read_seconds) + " s" +
+                 (in.dropped ? " (" + std::to_string(in.dropped) + " bad records skipped)" : ""));
+      if (in.dropped)
+        log().warning(in.file.filename().string() + ": skipped " + std::to_string(in.dropped) +
+                      " bad records");
+      if (!cloud_->preview_error.empty()) log().warning(cloud_->preview_error);
+      if (cloud_->preview && !cloud_->preview->frame_error.empty())
+        log().warning(cloud_->preview->frame_error);
       show_cloud();
       if (fit_on_open_) start_fit();
     } else if (outcome->error) {
@@ -142,7 +135,7 @@ void FitWorkspace::update() {
       fit_ = std::move(*outcome->value);
       fit_error_.clear();
       show_fit();
-      log().info("Fit finished in " + number_text(fit_seconds_) + " s: " + fit_->fit.reason);
+      log().info("Fit finished in " + number_text(fit_seconds_) + " s: " + fit_->result.reason);
     } else if (outcome->cancelled) {
       log().info("Fit cancelled");
     } else if (outcome->error) {
@@ -152,21 +145,22 @@ void FitWorkspace::update() {
   }
 }
 
+FitJobOptions FitWorkspace::job_options() const {
+  FitJobOptions options = fit_job_options(fit_project(settings_, {}));
+  options.threads = kThreads;
+  return options;
+}
+
 void FitWorkspace::start_fit() {
   if (!cloud_) return;
   fit_error_.clear();
-  fit_task_.start([cloud = cloud_, settings = settings_](TaskControl& control) {
-    RotationalFitOptions options = to_fit_options(settings, kThreads);
-    const ProgressFn progress = [&control](double f) { control.report(f); };
-    options.spherical.function.progress = progress;
-    options.cylindrical.function.progress = progress;
-    FitRun run;
-    run.settings = settings;
-    run.fit = fit_rotational(cloud->points, options);
-    const FitReport& report = run.fit.report();
-    run.scale = std::max(report.error.p99, 1e-12);
-    run.deviation =
-        make_point_set(cloud->points, cloud->bounds.center(), report.signed_distance, run.scale);
+  fit_task_.start([cloud = cloud_, settings = settings_,
+                   options = job_options()](TaskControl& control) mutable {
+    options.fit_progress = [&control](double f) { control.report(f); };
+    FitRun run{settings, fit_cloud(cloud->input, options), {}, 0.0};
+    run.scale = deviation_color_limit(run.result);
+    run.deviation = make_point_set(run.result.points, cloud->bounds.center(),
+                                   run.result.report().signed_distance, run.scale);
     return run;
   });
 }
@@ -176,8 +170,12 @@ void FitWorkspace::show_cloud() {
   scene_.layer(SceneLayer::surface).clear();
   scene_.layer(SceneLayer::net).clear();
   LineSet axes;
-  if (cloud_->frame) {
-    const LocalFrame& f = cloud_->frame->frame;
+  const LocalFrame* frame = !cloud_->preview           ? nullptr
+                            : cloud_->preview->profile ? &cloud_->preview->plane.frame
+                            : cloud_->preview->frame   ? &cloud_->preview->frame->frame
+                                                       : nullptr;
+  if (frame) {
+    const LocalFrame& f = *frame;
     const double length = 0.6 * cloud_->bounds.radius();
     const float rgb[3][3] = {{0.84f, 0.37f, 0.0f}, {0.0f, 0.62f, 0.45f}, {0.0f, 0.45f, 0.7f}};
     for (int k = 0; k < 3; ++k)
@@ -193,18 +191,29 @@ void FitWorkspace::show_cloud() {
 
 void FitWorkspace::show_fit() {
   const Eigen::Vector3d origin = cloud_->bounds.center();
-  TriangleMesh mesh = make_surface_mesh(fit_->fit.surface(), origin, kSurfaceRgb, 96, 96);
-  LineSet net;
-  add_control_net(net, fit_->fit.surface(), origin, kNetRgb);
-  if (const auto& s = fit_->fit.spherical)
-    for (const auto* cap :
-         {s->north_cap ? &*s->north_cap : nullptr, s->south_cap ? &*s->south_cap : nullptr})
-      if (cap) {
-        append_mesh(mesh, make_surface_mesh(cap->surface, origin, kSurfaceRgb, 32, 96));
-        add_control_net(net, cap->surface, origin, kNetRgb);
-      }
+  TriangleMesh mesh;
+  LineSet net, curve;
+  if (const auto* surface = std::get_if<RotationalFit>(&fit_->result.fit)) {
+    mesh = make_surface_mesh(surface->surface(), origin, kSurfaceRgb, 96, 96);
+    add_control_net(net, surface->surface(), origin, kNetRgb);
+    if (const auto& s = surface->spherical)
+      for (const auto* cap :
+           {s->north_cap ? &*s->north_cap : nullptr, s->south_cap ? &*s->south_cap : nullptr})
+        if (cap) {
+          append_mesh(mesh, make_surface_mesh(cap->surface, origin, kSurfaceRgb, 32, 96));
+          add_control_net(net, cap->surface, origin, kNetRgb);
+        }
+  } else {  // a polar profile: the curve and its control polygon
+    const NurbsCurve3d& c = std::get<ProfileFit>(fit_->result.fit).curve;
+    std::vector<Eigen::Vector3d> points;
+    for (int k = 0; k <= 2000; ++k)
+      points.push_back(c(c.front() + (c.back() - c.front()) * k / 2000));
+    add_polyline(curve, points, origin, kSurfaceRgb);
+    add_polyline(net, c.control_points(), origin, kNetRgb);
+  }
   scene_.layer(SceneLayer::surface).upload(mesh);
   scene_.layer(SceneLayer::net).upload(net);
+  if (!curve.positions.empty()) scene_.layer(SceneLayer::extra).upload(curve);
   scene_.layer(SceneLayer::cloud).upload(show_deviation_ ? fit_->deviation : cloud_->display);
 }
 
@@ -238,24 +247,13 @@ void FitWorkspace::draw_controls() {
     return;
   }
   if (cloud_) {
-    ImGui::TextWrapped("%s", cloud_->file.string().c_str());
-    ImGui::Text("%ld points, read in %.2f s", static_cast<long>(cloud_->points.cols()),
-                cloud_->read_seconds);
+    ImGui::TextWrapped("%s", cloud_->input.file.string().c_str());
+    ImGui::Text("%ld points, read in %s s", static_cast<long>(cloud_->input.points.cols()),
+                number_text(cloud_->input.read_seconds).c_str());
     const Eigen::Vector3d size = cloud_->bounds.max - cloud_->bounds.min;
     ImGui::Text("extent %s mm", text_of(size).c_str());
   }
-  section("Local frame (Bae 2002, §4.3)");
-  const FrameEstimate* frame =
-      fit_ ? &fit_->fit.frame() : (cloud_ && cloud_->frame ? &*cloud_->frame : nullptr);
-  if (frame) {
-    if (frame->quadric)
-      ImGui::Text("quadric: %s", to_string(frame->quadric->classification.type).c_str());
-    ImGui::Text("origin %s", text_of(frame->frame.origin).c_str());
-    ImGui::Text("axis k %s", text_of(frame->frame.axes.col(2)).c_str());
-    ImGui::TextWrapped("%s", frame->reason.c_str());
-  } else if (cloud_) {
-    ImGui::TextColored(ImVec4(0.8f, 0.1f, 0.1f, 1), "%s", cloud_->frame_error.c_str());
-  }
+  draw_frame();
   section("Fit options");
   draw_fit_options(settings_);
   ImGui::Checkbox("fit when a cloud is opened", &fit_on_open_);
@@ -277,18 +275,58 @@ void FitWorkspace::draw_controls() {
   }
 }
 
+// The plane of a profile, or the local frame of a surface (Bae 2002, §4.3): the fit's once there
+// is one, else the preview's.
+void FitWorkspace::draw_frame() {
+  const FitJobResult* r = fit_ ? &fit_->result : nullptr;
+  const FitPreview* p = cloud_ && cloud_->preview ? &*cloud_->preview : nullptr;
+  const bool profile = r ? r->profile() : p && p->profile;
+  if (profile) {
+    section("Profile plane");
+    const CloudPlane& plane = r ? r->plane : p->plane;
+    ImGui::Text("origin %s", text_of(plane.frame.origin).c_str());
+    ImGui::Text("normal %s", text_of(plane.frame.axes.col(2)).c_str());
+    ImGui::TextWrapped("points within %s mm (rms) of the plane",
+                       number_text(plane.rms_distance).c_str());
+    return;
+  }
+  section("Local frame (Bae 2002, §4.3)");
+  const FrameEstimate* frame = r               ? &std::get<RotationalFit>(r->fit).frame()
+                               : p && p->frame ? &*p->frame
+                                               : nullptr;
+  if (frame) {
+    if (frame->quadric)
+      ImGui::Text("quadric: %s", to_string(frame->quadric->classification.type).c_str());
+    ImGui::Text("origin %s", text_of(frame->frame.origin).c_str());
+    ImGui::Text("axis k %s", text_of(frame->frame.axes.col(2)).c_str());
+    ImGui::TextWrapped("%s", frame->reason.c_str());
+  } else if (cloud_) {
+    const std::string& why = !cloud_->preview_error.empty() ? cloud_->preview_error
+                             : p                            ? p->frame_error
+                                                            : "";
+    ImGui::TextColored(ImVec4(0.8f, 0.1f, 0.1f, 1), "%s", why.c_str());
+  }
+}
+
 void FitWorkspace::draw_report() {
   if (!fit_) return;
-  const RotationalFit& f = fit_->fit;
+  const FitJobResult& f = fit_->result;
   const FitReport& r = f.report();
   section("Fit report");
-  ImGui::Text("method: %s%s", to_string(f.method).c_str(),
+  ImGui::Text("method: %s%s", f.method.c_str(),
               fit_->settings == settings_ ? "" : " (options changed since)");
   ImGui::TextWrapped("%s", f.reason.c_str());
-  ImGui::Text("F: degree (%d, %d), net %d x %d, λ = %.3g", r.degree_u, r.degree_v, r.size_u,
-              r.size_v, r.lambda);
-  ImGui::Text("NURBS: degree (%d, %d), %d x %d control points", r.nurbs_degree_u, r.nurbs_degree_v,
-              r.nurbs_size_u, r.nurbs_size_v);
+  if (const auto* profile = std::get_if<ProfileFit>(&f.fit)) {
+    ImGui::Text("F: degree %d, %d control values, λ = %s", r.degree_v, r.size_v,
+                number_text(r.lambda).c_str());
+    ImGui::Text("NURBS curve: degree %d, %d control points", profile->curve.degree(),
+                profile->curve.size());
+  } else {
+    ImGui::Text("F: degree (%d, %d), net %d x %d, λ = %s", r.degree_u, r.degree_v, r.size_u,
+                r.size_v, number_text(r.lambda).c_str());
+    ImGui::Text("NURBS: degree (%d, %d), %d x %d control points", r.nurbs_degree_u,
+                r.nurbs_degree_v, r.nurbs_size_u, r.nurbs_size_v);
+  }
   if (ImGui::BeginTable("errors", 3, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingStretchSame)) {
     ImGui::TableSetupColumn("distance [mm]");
     ImGui::TableSetupColumn("true (closest point)");
@@ -298,9 +336,9 @@ void FitWorkspace::draw_report() {
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(name);
       ImGui::TableNextColumn();
-      ImGui::Text("%.4g", a);
+      ImGui::TextUnformatted(number_text(a).c_str());
       ImGui::TableNextColumn();
-      ImGui::Text("%.4g", b);
+      ImGui::TextUnformatted(number_text(b).c_str());
     };
     row("rms", r.error.rms, r.radial.rms);
     row("mean", r.error.mean, r.radial.mean);
@@ -312,8 +350,10 @@ void FitWorkspace::draw_report() {
   if (r.unconverged)
     ImGui::TextColored(ImVec4(0.7f, 0.4f, 0, 1), "%zu closest-point searches did not converge",
                        r.unconverged);
-  ImGui::Text("time %.2f s (frame %.2f, sync %.2f, solve %.2f, error %.2f)", fit_seconds_,
-              r.times.frame, r.times.sync, r.times.solve, r.times.error);
+  ImGui::Text("time %s s (frame %s, sync %s, solve %s, error %s)",
+              number_text(fit_seconds_).c_str(), number_text(r.times.frame).c_str(),
+              number_text(r.times.sync).c_str(), number_text(r.times.solve).c_str(),
+              number_text(r.times.error).c_str());
 }
 
 void FitWorkspace::draw_view() {
@@ -347,65 +387,42 @@ void FitWorkspace::draw_view() {
     for (int i = 0; i < 40; ++i)
       dl->AddRectFilled(ImVec2(o.x + w * i / 40, o.y), ImVec2(o.x + w * (i + 1) / 40, o.y + h),
                         diverging_color(-1.0 + 2.0 * (i + 0.5) / 40));
-    char text[96];
-    std::snprintf(text, sizeof text, "signed distance: −%.3g … +%.3g mm (outside +)", fit_->scale,
-                  fit_->scale);
-    dl->AddText(ImVec2(o.x, o.y + h + 2), color::text, text);
+    const std::string text = "signed distance: −" + number_text(fit_->scale) + " … +" +
+                             number_text(fit_->scale) + " mm (outside +)";
+    dl->AddText(ImVec2(o.x, o.y + h + 2), color::text, text.c_str());
   }
 }
 
-FitJobResult FitWorkspace::job_result() const {
-  FitJobResult r;
-  r.input = cloud_->file;
-  r.points = cloud_->points;
-  r.dropped = cloud_->dropped;
-  r.method = to_string(fit_->fit.method);
-  r.reason = fit_->fit.reason;  // r.plane: only profiles (polar fits) report it
-  r.surface = fit_->fit;
-  r.fairness = static_cast<FairnessOptions::Mode>(fit_->settings.fairness);
-  r.fairness_weight = fit_->settings.fairness_weight;
-  r.base = fit_->settings.quartic_base ? ArcKind::quartic : ArcKind::rqb;
-  r.seconds = cloud_->read_seconds + fit_seconds_;
-  return r;
-}
-
 std::vector<ExportChoice> FitWorkspace::export_choices() const {
-  const std::string stem = cloud_ ? cloud_->file.stem().string() + "_fit" : "fit";
+  const std::string stem = cloud_ ? cloud_->input.file.stem().string() + "_fit" : "fit";
   const bool ready = fit_.has_value();
-  const std::string needs = ready ? "" : "fit a surface first";
+  const std::string what = fit_ && fit_->result.profile() ? "Curve" : "Surface";
+  const std::string needs = ready ? "" : "fit first";
   return {{{"all", "Export all outputs into the folder", "", stem + "_outputs"},
            "All outputs to a folder…",
            ready,
-           "What `polarform fit` writes: the surface as IGES, STEP and X3D, deviation.ply, "
-           "preview.svg and report.json"},
-          {{"iges", "Export IGES", ".igs", stem + ".igs"}, "Surface as IGES…", ready, needs, true},
-          {{"step", "Export STEP", ".stp", stem + ".stp"}, "Surface as STEP…", ready, needs},
-          {{"x3d", "Export X3D", ".x3d", stem + ".x3d"}, "Surface as X3D…", ready, needs}};
+           "What `polarform fit` writes: the fitted surface or curve as IGES, STEP and X3D, "
+           "deviation.ply, preview.svg, report.html and report.json"},
+          {{"iges", "Export IGES", ".igs", stem + ".igs"}, what + " as IGES…", ready, needs, true},
+          {{"step", "Export STEP", ".stp", stem + ".stp"}, what + " as STEP…", ready, needs},
+          {{"x3d", "Export X3D", ".x3d", stem + ".x3d"}, what + " as X3D…", ready, needs}};
 }
 
 void FitWorkspace::export_to(const ExportRequest& request, const std::filesystem::path& file) {
   if (!fit_) return;
   guarded(log(), "Export " + file.filename().string(), [&] {
     if (request.tag == "all") {
-      const auto files = write_fit_outputs(job_result(), file);
+      const auto files = write_fit_outputs(fit_->result, file);
       log().info("Wrote " + std::to_string(files.size()) + " files into " + file.string());
       return;
     }
-    const NurbsSurface& s = fit_->fit.surface();
-    if (request.tag == "iges") {
-      IgesWriter w;
-      w.add(s, "fitted surface");
-      w.save(file);
-    } else if (request.tag == "step") {
-      StepWriter w("fitted surface");
-      w.add(s, "surface");
-      w.save(file);
-    } else if (request.tag == "x3d") {
-      X3dWriter w;
-      w.add(s, "surface");
-      w.save(file, document_name());
-    }
-    log().info("Exported " + file.string());
+    // One file of the job's bundle, byte for byte what `polarform fit` writes.
+    const std::string name = std::string(fit_->result.profile() ? "curve" : "surface") +
+                             (request.tag == "iges"   ? ".igs"
+                              : request.tag == "step" ? ".stp"
+                                                      : ".x3d");
+    write_file_atomically(file, render_fit_outputs(fit_->result).at(name));
+    log().info("Exported " + file.string() + " (" + name + ")");
   });
 }
 
@@ -426,22 +443,17 @@ bool FitWorkspace::scripted_edit() {
 
 std::string FitWorkspace::numbers() const {
   std::ostringstream out;
-  out << "points=" << (cloud_ ? cloud_->points.cols() : 0) << "\n";
+  out << "points=" << (cloud_ ? cloud_->input.points.cols() : 0) << "\n";
   out << "net_setting="
       << (settings_.use_tolerance ? "tolerance"
                                   : std::to_string(settings_.size_u) + "x" +
                                         std::to_string(settings_.size_v))
       << "\n";
-  if (cloud_ && cloud_->frame && cloud_->frame->quadric)
-    out << "quadric=" << to_string(cloud_->frame->quadric->classification.type) << "\n";
+  if (cloud_ && cloud_->preview && cloud_->preview->frame && cloud_->preview->frame->quadric)
+    out << "quadric=" << to_string(cloud_->preview->frame->quadric->classification.type) << "\n";
   out << "fitted=" << (fit_ ? 1 : 0) << "\n";
-  if (fit_) {
-    const FitReport& r = fit_->fit.report();
-    out << "method=" << to_string(fit_->fit.method) << "\nrms_mm=" << r.error.rms
-        << "\nmax_mm=" << r.error.max << "\nnurbs_degree=" << r.nurbs_degree_u << "x"
-        << r.nurbs_degree_v << "\ncontrol_points=" << r.nurbs_size_u << "x" << r.nurbs_size_v
-        << "\n";
-  }
+  // The fields of report.json for the fit shown, from the job's own report builder.
+  if (fit_) out << report_lines(fit_report_fields(fit_->result));
   return out.str();
 }
 

@@ -1,15 +1,16 @@
-// The fit workspace: open a point cloud (dialog or drag-and-drop; read in the background with a
-// progress bar), see it in 3D with its estimated local frame and quadric type, choose the fit
-// options, run the spherical / cylindrical / automatic fit in the background with progress and
-// cancel, and inspect the fitted surface (shaded, control net), the deviation colour map on the
-// points, and the fit report; export the surface.
+// The fit workspace: open a point cloud or a fit project (dialog or drag-and-drop), read and
+// previewed by the fit job's first stages in the background with a progress bar — the cloud in 3D
+// with its profile plane or estimated local frame and quadric type — choose the fit options (every
+// method of `polarform fit`: automatic, polar profile, spherical, cylindrical), run the job's fit
+// stage in the background with progress and cancel, and inspect the fitted surface (shaded,
+// control net) or profile curve, the deviation colour map on the points, and the fit report;
+// export the job's outputs.
 #pragma once
 
 #include <memory>
 #include <optional>
 #include <string>
 
-#include "src/fit/rotational_fit.h"
 #include "jobs/fit/fit_job.h"
 #include "ui/studio/background_task.h"
 #include "ui/studio/fit_options_panel.h"
@@ -19,22 +20,20 @@
 
 namespace polarform::studio {
 
+// The fit job's first stages on an opened cloud, with what the 3D view draws of it.
 struct LoadedCloud {
-  std::filesystem::path file;
-  Eigen::Matrix3Xd points;
-  std::size_t dropped = 0;
-  double read_seconds = 0.0;
-  std::optional<FrameEstimate> frame;
-  std::string frame_error;
+  FitInput input;
+  std::optional<FitPreview> preview;  // with the options at opening
+  std::string preview_error;          // why there is none
   SceneBounds bounds;
   PointSet display;  // relative to bounds.center()
 };
 
 struct FitRun {
   FitSettings settings;
-  RotationalFit fit;
+  FitJobResult result;
   PointSet deviation;  // points coloured by signed distance
-  double scale = 0.0;  // |distance| at the ends of the colour map (the 99th percentile), mm
+  double scale = 0.0;  // |distance| at the ends of the colour map, mm (deviation_color_limit)
 };
 
 class FitWorkspace : public Workspace {
@@ -74,12 +73,12 @@ class FitWorkspace : public Workspace {
  private:
   void start_fit();
   void draw_controls();
+  void draw_frame();
   void draw_report();
   void draw_view();
   void show_cloud();
   void show_fit();
-  // The fit as `polarform fit` reports it (for File ▸ Export ▸ All outputs).
-  FitJobResult job_result() const;
+  FitJobOptions job_options() const;
 
   BackgroundTask<LoadedCloud> load_task_;
   BackgroundTask<FitRun> fit_task_;

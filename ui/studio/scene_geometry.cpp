@@ -109,6 +109,12 @@ void add_segment(LineSet& lines, const Eigen::Vector3d& a, const Eigen::Vector3d
   push_rgb(lines.colors, rgb);
 }
 
+void add_polyline(LineSet& lines, const std::vector<Eigen::Vector3d>& points,
+                  const Eigen::Vector3d& origin, const float* rgb) {
+  for (std::size_t k = 1; k < points.size(); ++k)
+    add_segment(lines, points[k - 1], points[k], origin, rgb);
+}
+
 void add_control_net(LineSet& lines, const NurbsSurface& surface, const Eigen::Vector3d& origin,
                      const float* rgb) {
   const int nu = surface.size_u(), nv = surface.size_v();

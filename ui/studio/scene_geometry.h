@@ -55,6 +55,9 @@ void add_control_net(LineSet& lines, const NurbsSurface& surface, const Eigen::V
                      const float* rgb);
 void add_segment(LineSet& lines, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                  const Eigen::Vector3d& origin, const float* rgb);
+// Consecutive points joined by segments.
+void add_polyline(LineSet& lines, const std::vector<Eigen::Vector3d>& points,
+                  const Eigen::Vector3d& origin, const float* rgb);
 
 SceneBounds bounds_of(const Eigen::Matrix3Xd& points);
 SceneBounds bounds_of(const NurbsSurface& surface);

@@ -25,7 +25,7 @@ TEST(FitJob, ExactSphereGivesDegreeTwoTwoAtRoundOff) {
   EXPECT_EQ(rep.nurbs_degree_u, 2);
   EXPECT_EQ(rep.nurbs_degree_v, 2);
   EXPECT_LT(rep.error.max, 1e-9);
-  EXPECT_LT((r.surface->frame().frame.origin - centre).norm(), 1e-9);
+  EXPECT_LT((std::get<RotationalFit>(r.fit).frame().frame.origin - centre).norm(), 1e-9);
   RecordProperty("max_error_mm", std::to_string(rep.error.max));
 }
 
@@ -56,10 +56,11 @@ TEST(FitJob, PlanarCircleIsAPolarCurveOfDegreeTwo) {
   }
   const FitJobResult r = run_fit_job(p, "circle");
   EXPECT_EQ(r.method, "polar");
-  ASSERT_TRUE(r.curve);
-  EXPECT_EQ(r.curve->degree(), 2);
+  ASSERT_TRUE(r.profile());
+  const NurbsCurve3d& curve = std::get<ProfileFit>(r.fit).curve;
+  EXPECT_EQ(curve.degree(), 2);
   EXPECT_LT(r.report().error.max, 1e-9);
-  EXPECT_NEAR(r.curve->point(r.curve->front()).z(), 7.5, 1e-12);
+  EXPECT_NEAR(curve.point(curve.front()).z(), 7.5, 1e-12);
 }
 
 TEST(FitJob, NoisyVaseIsFittedToTheNoiseLevel) {

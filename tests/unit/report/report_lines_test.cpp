@@ -30,6 +30,7 @@ TEST(ReportLines, NestedNamesJoinWithDotsAndNumbersReadBackExactly) {
             "report.arc_list.0.start_deg=0\n"
             "report.arc_list.1.start_deg=90.5\n");
   EXPECT_EQ(report_lines({{"a", 1}}, ""), "a=1\n");
+  EXPECT_EQ(report_lines({{"why", "two\nlines \\ one"}}, ""), "why=two\\nlines \\\\ one\n");
 }
 
 TEST(OutputFiles, ReportsComeLastInTheirOrder) {

@@ -9,6 +9,7 @@
 #define STB_IMAGE_IMPLEMENTATION
 #include <stb/stb_image.h>
 
+#include <Eigen/Core>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -18,6 +19,7 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <numbers>
 #include <random>
 #include <set>
@@ -25,11 +27,9 @@
 #include <string>
 #include <thread>
 
-#include <Eigen/Core>
-#include <nlohmann/json.hpp>
-
 #include "jobs/project/cam_project.h"
 #include "jobs/project/fit_project.h"
+#include "jobs/report/report_lines.h"
 
 namespace {
 
@@ -281,7 +281,7 @@ TEST_F(StudioTest, FitWorkspaceRendersTheFittedScan) {
   const auto n = numbers(r.output);
   EXPECT_EQ(number(n, "points"), 8000);
   EXPECT_EQ(number(n, "fitted"), 1) << r.output;
-  EXPECT_LT(number(n, "rms_mm"), 1.0);
+  EXPECT_LT(number(n, "report.error_mm.rms"), 1.0);
 }
 
 // A fit project sets the options and names the scan: a closed spherical fit, G1 poles, 12 x 24.
@@ -290,10 +290,11 @@ TEST_F(StudioTest, FitWorkspaceOpensAFitProject) {
   const auto n = numbers(r.output);
   EXPECT_EQ(number(n, "points"), 3000) << r.output;
   EXPECT_EQ(number(n, "fitted"), 1) << r.output;
-  EXPECT_NE(r.output.find("method=spherical"), std::string::npos) << r.output;
+  EXPECT_EQ(n.at("report.method"), "spherical") << r.output;
   // Bicubic F of 12 x 24 times the RQB base sphere: (5, 5), 35 x 81 control points.
-  EXPECT_NE(r.output.find("control_points=35x81"), std::string::npos) << r.output;
-  EXPECT_LT(number(n, "rms_mm"), 0.03);  // σ = 0.02 mm
+  EXPECT_EQ(number(n, "report.control_net.nurbs.0"), 35) << r.output;
+  EXPECT_EQ(number(n, "report.control_net.nurbs.1"), 81) << r.output;
+  EXPECT_LT(number(n, "report.error_mm.rms"), 0.03);  // σ = 0.02 mm
   EXPECT_EQ(error_count(r.output), 0) << r.output;
 }
 
@@ -474,10 +475,10 @@ TEST_F(StudioTest, ScriptDropsFilesOnTheWindow) {
   const auto dropped = numbers(r.output, "dropped:"), after = numbers(r.output, "after:");
   EXPECT_EQ(number(dropped, "points"), 4000);  // the fit workspace took the cloud
   EXPECT_EQ(number(dropped, "fitted"), 1);
-  EXPECT_LT(number(dropped, "rms_mm"), 1e-2);  // a noise-free ellipsoid
+  EXPECT_LT(number(dropped, "report.error_mm.rms"), 1e-2);  // a noise-free ellipsoid
   EXPECT_EQ(after, dropped) << "the broken file changed the fit workspace";
   const auto report = nlohmann::json::parse(slurp(dir_ / "fit_outputs" / "report.json"));
-  EXPECT_NEAR(report["error_mm"]["rms"].get<double>(), number(dropped, "rms_mm"), 1e-9)
+  EXPECT_EQ(report["error_mm"]["rms"].get<double>(), number(dropped, "report.error_mm.rms"))
       << report.dump(1);
   EXPECT_EQ(report["fairness"], "relative");  // the studio's defaults, as polarform fit's
   EXPECT_EQ(report["base"], "rqb");
@@ -578,10 +579,14 @@ TEST_F(StudioTest, ScriptEditsUndoesAndSavesAFitProject) {
   const auto opened = numbers(r.output, "opened:"), edited = numbers(r.output, "edited:");
   const auto undone = numbers(r.output, "undone:");
   EXPECT_EQ(opened.at("net_setting"), "12x24");
-  EXPECT_EQ(opened.at("control_points"), "35x81");  // bicubic 12 x 24 times the RQB sphere
+  // Bicubic 12 x 24 times the RQB sphere: 35 x 81; 8 x 20: 3n − 1 along φ, 3n + 9 around θ.
+  EXPECT_EQ(opened.at("report.control_net.nurbs.0") + "x" + opened.at("report.control_net.nurbs.1"),
+            "35x81");
   EXPECT_EQ(edited.at("net_setting"), "8x20");
-  EXPECT_EQ(edited.at("control_points"), "23x69");  // 3n − 1 along φ, 3n + 9 around θ
-  EXPECT_GT(number(edited, "rms_mm"), number(opened, "rms_mm"));  // a coarser net fits worse
+  EXPECT_EQ(edited.at("report.control_net.nurbs.0") + "x" + edited.at("report.control_net.nurbs.1"),
+            "23x69");
+  // A coarser net fits worse.
+  EXPECT_GT(number(edited, "report.error_mm.rms"), number(opened, "report.error_mm.rms"));
   EXPECT_EQ(undone.at("net_setting"), "12x24");
   std::vector<std::string> warnings;
   const polarform::FitProject saved = polarform::read_fit_project(dir_ / "saved_fit.xml", warnings);
@@ -589,6 +594,92 @@ TEST_F(StudioTest, ScriptEditsUndoesAndSavesAFitProject) {
   ASSERT_TRUE(saved.center);
   EXPECT_EQ(*saved.center, Eigen::Vector3d(0.01, 0, 0));
   EXPECT_EQ(saved.pole, polarform::PoleTreatment::g1);
+}
+
+// One pipeline per job: for every example the studio opens — the cams, the vessels, the fit
+// projects and the scans `polarform fit` takes, a planar profile among them — every report field
+// the studio shows equals the CLI's report.json, and the studio's "All outputs" are the CLI's
+// files byte for byte (timings aside; SOURCE_DATE_EPOCH fixes the exchange files' stamps).
+TEST_F(StudioTest, EveryExampleShowsAndExportsWhatTheCliWrites) {
+  struct Example {
+    std::string command;  // the CLI command of its job
+    fs::path file;
+  };
+  std::vector<Example> examples;
+  for (const char* cam : {"roller", "flat_faced", "offset_roller", "polynomial", "cylindrical"})
+    examples.push_back({"cam", kExamples / "cams" / (std::string(cam) + ".xml")});
+  for (const char* vessel :
+       {"hemispherical", "ellipsoidal_2_1", "torispherical_100_6", "custom_curvature"})
+    examples.push_back({"vessel", kExamples / "vessels" / (std::string(vessel) + ".xml")});
+  for (const char* scan : {"sphere_like_fit.xml", "lobed_profile_fit.xml", "sphere_like.xyz",
+                           "vase.xyz", "lobed_profile.xyz"})
+    examples.push_back({"fit", kExamples / "scans" / scan});
+  std::string script;
+  for (std::size_t k = 0; k < examples.size(); ++k)
+    script += "open \"" + examples[k].file.string() + "\"\nnumbers example" + std::to_string(k) +
+              "\nexport all studio" + std::to_string(k) + "\n";
+  const fs::path script_file = write("examples.txt", script);
+  const StudioRun r =
+      run_studio("--script '" + script_file.string() + "' --size 1280x800 --state-dir '" +
+                 (dir_ / "state").string() + "'");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(error_count(r.output), 0) << r.output;
+  const std::string cli = (fs::path(POLARFORM_BINARY_DIR) / "ui" / "cli" / "polarform").string();
+  // Timings: the report.json fields and the report.html parts that measure the run, not the part.
+  const auto without_timings = [](nlohmann::ordered_json j) {
+    for (const char* field : {"seconds", "timings", "timings_s"}) j.erase(field);
+    return j;
+  };
+  const auto html_without_timings = [](const std::string& html) {
+    std::string out;
+    std::istringstream in(html);
+    bool stage_table = false;
+    for (std::string line; std::getline(in, line);) {
+      if (line.find("<th>stage</th><th>seconds</th>") != std::string::npos) stage_table = true;
+      if (stage_table && line.find("</table>") != std::string::npos) stage_table = false;
+      if (stage_table || line.find("<dt>time</dt>") != std::string::npos) continue;
+      out += line + "\n";
+    }
+    return out;
+  };
+  for (std::size_t k = 0; k < examples.size(); ++k) {
+    const Example& e = examples[k];
+    SCOPED_TRACE(e.file.filename().string());
+    const fs::path out = dir_ / ("cli" + std::to_string(k));
+    ASSERT_EQ(std::system(("SOURCE_DATE_EPOCH=1700000000 '" + cli + "' " + e.command + " '" +
+                           e.file.string() + "' --out '" + out.string() + "' -q 2>/dev/null")
+                              .c_str()),
+              0);
+    const auto report = nlohmann::ordered_json::parse(slurp(out / "report.json"));
+    // The numbers shown: each report field the studio prints is the CLI's, to the last digit.
+    const auto shown = numbers(r.output, "example" + std::to_string(k) + ":");
+    const auto written = numbers(polarform::report_lines(without_timings(report)));
+    int compared = 0;
+    for (const auto& [key, value] : shown) {
+      if (key.rfind("report.", 0) != 0) continue;
+      ASSERT_TRUE(written.count(key)) << key << " is not in report.json";
+      EXPECT_EQ(value, written.at(key)) << key;
+      ++compared;
+    }
+    EXPECT_GE(compared, 25) << "too few report fields shown";
+    // The exports: every file of the CLI's bundle, the same bytes.
+    const fs::path studio = dir_ / ("studio" + std::to_string(k));
+    int files = 0;
+    for (const auto& entry : fs::directory_iterator(out)) {
+      const std::string name = entry.path().filename().string();
+      ASSERT_TRUE(fs::exists(studio / name)) << name;
+      if (name == "report.json")
+        EXPECT_EQ(without_timings(nlohmann::ordered_json::parse(slurp(studio / name))),
+                  without_timings(report));
+      else if (name == "report.html")
+        EXPECT_EQ(html_without_timings(slurp(studio / name)), html_without_timings(slurp(entry)));
+      else
+        EXPECT_TRUE(slurp(studio / name) == slurp(entry)) << name << " differs";
+      ++files;
+    }
+    EXPECT_EQ(files, static_cast<int>(
+                         std::distance(fs::directory_iterator(studio), fs::directory_iterator())));
+  }
 }
 
 }  // namespace

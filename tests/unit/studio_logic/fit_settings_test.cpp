@@ -1,23 +1,23 @@
 // The fit workspace's settings and fit project files: every setting survives settings → project
-// → XML → project → settings exactly (frame overrides, fairness and base arcs included); the
-// polar method, which the studio does not fit, is named; the settings become the fitter's options
-// (method, net or tolerance, closure, poles, frame).
+// → XML → project → settings exactly (frame overrides, fairness, base arcs and every method, the
+// polar profile included); through the project the settings become the fit job's options
+// (method, net or tolerance, closure, poles, frame), as `polarform fit` takes them.
+#include "ui/studio/fit_settings.h"
+
 #include <gtest/gtest.h>
 
-#include "ui/studio/fit_settings.h"
+#include "jobs/fit/fit_job.h"
 
 namespace polarform::studio {
 namespace {
 
 FitSettings round_trip(const FitSettings& s) {
-  std::vector<std::string> warnings, ignored;
+  std::vector<std::string> warnings;
   const FitProject p =
       parse_fit_project(fit_project_xml(fit_project(s, "scan.ply")), "fit.xml", warnings);
   EXPECT_TRUE(warnings.empty());
   EXPECT_EQ(p.scan, std::filesystem::path("scan.ply"));
-  const FitSettings back = fit_settings(p, ignored);
-  EXPECT_TRUE(ignored.empty());
-  return back;
+  return fit_settings(p);
 }
 
 TEST(FitSettings, ProjectFieldsRoundTrip) {
@@ -48,48 +48,38 @@ TEST(FitSettings, FrameOverridesAndSkipBadRoundTrip) {
   EXPECT_EQ(round_trip(s), s);
 }
 
-TEST(FitSettings, ThePolarMethodIsNamedAsNotUsed) {
-  FitProject p;
-  p.scan = "a.xyz";
-  p.method = FitJobMethod::polar;
-  p.center = Eigen::Vector3d(1, 2, 3);
-  p.axis = Eigen::Vector3d(0, 0, 1);
-  std::vector<std::string> ignored;
-  const FitSettings s = fit_settings(p, ignored);
-  EXPECT_EQ(s.method, 0);
-  ASSERT_EQ(ignored.size(), 1u);
-  EXPECT_NE(ignored[0].find("polar"), std::string::npos);
-  EXPECT_EQ(s.center, p.center);
-  EXPECT_EQ(s.axis, p.axis);
+TEST(FitSettings, EveryMethodRoundTrips) {
+  for (FitJobMethod m : {FitJobMethod::automatic, FitJobMethod::polar, FitJobMethod::spherical,
+                         FitJobMethod::cylindrical}) {
+    FitSettings s;
+    s.method = static_cast<int>(m);
+    EXPECT_EQ(round_trip(s), s);
+    EXPECT_EQ(fit_job_options(fit_project(s, "a.xyz")).method, m);
+  }
 }
 
-TEST(FitSettings, BecomeTheFittersOptions) {
+TEST(FitSettings, BecomeTheFitJobsOptions) {
   FitSettings s;
-  s.method = 1;
+  s.method = static_cast<int>(FitJobMethod::spherical);
   s.size_u = 10, s.size_v = 20;
   s.pole = static_cast<int>(PoleTreatment::g1);
-  RotationalFitOptions o = to_fit_options(s, 3);
-  EXPECT_EQ(o.method, FitMethod::spherical);
-  EXPECT_EQ(o.spherical.function.size_u, 10);
-  EXPECT_EQ(o.spherical.function.size_v, 20);
-  EXPECT_EQ(o.spherical.function.tolerance, 0.0);  // a fixed net
-  EXPECT_EQ(o.spherical.north, PoleTreatment::g1);
-  EXPECT_EQ(o.spherical.south, PoleTreatment::g1);
-  EXPECT_EQ(o.spherical.function.threads, 3);
-  EXPECT_FALSE(o.spherical.frame.origin);  // estimated
-  EXPECT_FALSE(o.cylindrical.frame.axis);
+  FitJobOptions o = fit_job_options(fit_project(s, "a.xyz"));
+  EXPECT_EQ(o.method, FitJobMethod::spherical);
+  EXPECT_EQ(o.ctrl, std::make_pair(10, 20));
+  EXPECT_FALSE(o.tolerance);  // a fixed net
+  EXPECT_EQ(o.pole, PoleTreatment::g1);
+  EXPECT_FALSE(o.center);  // estimated
+  EXPECT_FALSE(o.axis);
   s.center = Eigen::Vector3d(4, 5, 6);
   s.axis = Eigen::Vector3d(1, 0, 0);
-  o = to_fit_options(s, 3);
-  EXPECT_EQ(o.spherical.frame.origin, s.center);
-  EXPECT_EQ(o.cylindrical.frame.origin, s.center);
-  EXPECT_EQ(o.spherical.frame.axis, s.axis);
-  EXPECT_EQ(o.cylindrical.frame.axis, s.axis);
+  o = fit_job_options(fit_project(s, "a.xyz"));
+  EXPECT_EQ(o.center, s.center);
+  EXPECT_EQ(o.axis, s.axis);
   s.use_tolerance = true;
   s.tolerance = 0.2;
-  o = to_fit_options(s, 1);
-  EXPECT_EQ(o.cylindrical.function.tolerance, 0.2);
-  EXPECT_EQ(o.cylindrical.function.size_u, 0);  // refined adaptively
+  o = fit_job_options(fit_project(s, "a.xyz"));
+  EXPECT_EQ(o.tolerance, 0.2);
+  EXPECT_FALSE(o.ctrl);  // refined adaptively
 }
 
 }  // namespace
