@@ -57,25 +57,9 @@ json quadric_json(const QuadricFit& q) {
               {"rms_sampson_distance_mm", q.rms_distance}};
 }
 
-std::string pole_name(PoleTreatment t) {
-  switch (t) {
-    case PoleTreatment::automatic:
-      return "automatic";
-    case PoleTreatment::none:
-      return "none";
-    case PoleTreatment::g0:
-      return "g0";
-    case PoleTreatment::g1:
-      return "g1";
-    case PoleTreatment::cap:
-      return "cap";
-  }
-  return "none";
-}
-
 json pole_json(PoleTreatment t, const std::optional<PoleReport>& p,
                const std::optional<PoleCap>& cap) {
-  json j{{"treatment", pole_name(t)}};
+  json j{{"treatment", pole_word(t)}};
   if (p)
     j["measured"] = {{"point", vec(p->point)},
                      {"gap_mm", p->gap},

@@ -26,17 +26,6 @@ Enum from_word(const std::string& word, const char* const (&words)[N]) {
   throw InputError("unknown word '" + word + "'");  // unreachable after XmlElementReader::choice
 }
 
-const char* pole_word(PoleTreatment p) {
-  switch (p) {
-    case PoleTreatment::none: return "none";
-    case PoleTreatment::g0: return "g0";
-    case PoleTreatment::g1: return "g1";
-    case PoleTreatment::cap: return "cap";
-    case PoleTreatment::automatic: break;
-  }
-  return "auto";
-}
-
 // "p,q" as two integers in [lo, hi].
 std::pair<int, int> int_pair(const XmlElementReader& r, const char* name, int lo, int hi) {
   const std::vector<double> v = r.numbers(name, 2);
@@ -121,6 +110,11 @@ std::string list(std::initializer_list<double> values) {
 }  // namespace
 
 const char* fairness_word(FairnessOptions::Mode mode) { return kFairness[static_cast<int>(mode)]; }
+
+const char* pole_word(PoleTreatment pole) {
+  constexpr const char* kPoles[] = {"auto", "none", "g0", "g1", "cap"};  // in PoleTreatment's order
+  return kPoles[static_cast<int>(pole)];
+}
 
 std::filesystem::path scan_path(const FitProject& project,
                                 const std::filesystem::path& project_file) {

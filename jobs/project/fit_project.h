@@ -43,6 +43,8 @@ struct FitProject {
 
 // "fixed", "relative" or "gcv": the word of a fairing rule in fit projects and reports.
 const char* fairness_word(FairnessOptions::Mode mode);
+// "auto", "none", "g0", "g1" or "cap": the word of a pole treatment in fit projects and reports.
+const char* pole_word(PoleTreatment pole);
 
 // The scan's path: `project.scan` taken relative to the folder of `project_file`.
 std::filesystem::path scan_path(const FitProject& project,

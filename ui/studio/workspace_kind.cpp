@@ -2,33 +2,13 @@
 
 namespace polarform::studio {
 
-std::string_view workspace_name(WorkspaceKind kind) {
-  switch (kind) {
-    case WorkspaceKind::cam:
-      return "cam";
-    case WorkspaceKind::study:
-      return "study";
-    case WorkspaceKind::vessel:
-      return "vessel";
-    case WorkspaceKind::fit:
-      return "fit";
-  }
-  return "cam";
-}
+// In WorkspaceKind's order.
+constexpr std::string_view kNames[] = {"cam", "study", "vessel", "fit"};
+constexpr std::string_view kTitles[] = {"Cam", "Study", "Vessel", "Fit"};
 
-std::string_view workspace_title(WorkspaceKind kind) {
-  switch (kind) {
-    case WorkspaceKind::cam:
-      return "Cam";
-    case WorkspaceKind::study:
-      return "Study";
-    case WorkspaceKind::vessel:
-      return "Vessel";
-    case WorkspaceKind::fit:
-      return "Fit";
-  }
-  return "Cam";
-}
+std::string_view workspace_name(WorkspaceKind kind) { return kNames[static_cast<int>(kind)]; }
+
+std::string_view workspace_title(WorkspaceKind kind) { return kTitles[static_cast<int>(kind)]; }
 
 std::optional<WorkspaceKind> parse_workspace(std::string_view name) {
   for (WorkspaceKind kind : kWorkspaces)
