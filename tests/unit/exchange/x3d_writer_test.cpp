@@ -148,10 +148,62 @@ TEST(X3dWriter, PatchSurfaceRebuiltFromParsedArrays) {
   }
 }
 
+// Coloured quads and points come back with one colour per point and their quads as written; a
+// Switch holds the named shapes in the order given, the first shown, in the scene where the
+// first of them was added.
+TEST(X3dWriter, ColouredMeshesPointsAndSwitches) {
+  const std::vector<Eigen::Vector3d> points = {
+      {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {2, 0, 1}};
+  const std::vector<Eigen::Vector3d> colors = {
+      {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.5, 0.5, 0.5}, {0.25, 0.75, 1}};
+  X3dWriter w;
+  w.add_colored_quads(points, colors, {{0, 1, 2, 3}, {1, 4, 2, 3}}, "mesh");
+  w.add(rational55(), "exact");
+  w.add_colored_points(points, colors, "net");
+  w.add_switch("views", {"mesh", "exact"});
+  const Parsed x(w.str());
+  const XMLElement* sw = x.scene->FirstChildElement("Switch");
+  ASSERT_NE(sw, nullptr);
+  EXPECT_STREQ(sw->Attribute("DEF"), "views");
+  EXPECT_EQ(sw->IntAttribute("whichChoice"), 0);
+  const XMLElement* mesh = sw->FirstChildElement("Shape");
+  EXPECT_STREQ(mesh->Attribute("DEF"), "mesh");
+  EXPECT_STREQ(mesh->NextSiblingElement("Shape")->Attribute("DEF"), "exact");
+  EXPECT_NE(mesh->NextSiblingElement("Shape")->FirstChildElement("NurbsPatchSurface"), nullptr);
+  const XMLElement* faces = mesh->FirstChildElement("IndexedFaceSet");
+  EXPECT_EQ(numbers(faces->Attribute("coordIndex")),
+            (std::vector<double>{0, 1, 2, 3, -1, 1, 4, 2, 3, -1}));
+  const std::vector<double> xyz =
+      numbers(faces->FirstChildElement("Coordinate")->Attribute("point"));
+  const std::vector<double> rgb = numbers(faces->FirstChildElement("Color")->Attribute("color"));
+  ASSERT_EQ(xyz.size(), 15u);
+  ASSERT_EQ(rgb.size(), 15u);
+  for (std::size_t k = 0; k < points.size(); ++k)
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_EQ(xyz[3 * k + c], points[k][c]);
+      EXPECT_EQ(rgb[3 * k + c], colors[k][c]);
+    }
+  // The points stand after the switch, in the scene itself.
+  const XMLElement* net = sw->NextSiblingElement("Shape");
+  ASSERT_NE(net, nullptr);
+  EXPECT_STREQ(net->Attribute("DEF"), "net");
+  EXPECT_EQ(
+      numbers(net->FirstChildElement("PointSet")->FirstChildElement("Color")->Attribute("color")),
+      rgb);
+}
+
 TEST(X3dWriter, RejectsBadInput) {
   X3dWriter w;
   EXPECT_THROW(w.add(ellipse(2, 1), "c", Eigen::Vector3d(1.5, 0, 0)), InputError);
   EXPECT_THROW(w.add(NurbsCurve2d(0, {0, 1, 2}, {{0, 0}, {1, 1}})), InputError);
+  const std::vector<Eigen::Vector3d> two = {{0, 0, 0}, {1, 0, 0}};
+  EXPECT_THROW(w.add_colored_points(two, {{1, 0, 0}}, "p"), InputError);             // one colour
+  EXPECT_THROW(w.add_colored_points(two, {{1, 0, 0}, {0, 2, 0}}, "p"), InputError);  // > 1
+  EXPECT_THROW(w.add_colored_quads(two, {{1, 0, 0}, {0, 1, 0}}, {{0, 1, 2, 0}}, "q"), InputError);
+  w.add_colored_points(two, {{1, 0, 0}, {0, 1, 0}}, "p");
+  EXPECT_THROW(w.add_switch("s", {"p", "missing"}), InputError);
+  w.add_switch("s", {"p"});
+  EXPECT_THROW(w.add_switch("t", {"p"}), InputError);  // already in a switch
 }
 
 }  // namespace
