@@ -86,8 +86,7 @@ ProfileFit fit_profile(const FitInput& in, const CloudPlane& plane, const FitJob
 
 FitReport& report_of(std::variant<ProfileFit, RotationalFit>& fit) {
   if (auto* p = std::get_if<ProfileFit>(&fit)) return p->polar.report;
-  RotationalFit& s = std::get<RotationalFit>(fit);
-  return s.spherical ? s.spherical->report : s.cylindrical->report;
+  return std::get<RotationalFit>(fit).report();
 }
 
 }  // namespace
@@ -158,7 +157,7 @@ FitJobResult fit_cloud(FitInput in, const FitJobOptions& o) {
                        ": a profile, polar curve fit (centre: " + p->polar.centre_reason + ")";
   } else {
     const RotationalFit& s = std::get<RotationalFit>(fit);
-    method = to_string(s.method);
+    method = to_string(s.method());
     reason = s.reason;
   }
   FitReport& rep = report_of(fit);

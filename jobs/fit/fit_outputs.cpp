@@ -165,8 +165,8 @@ json fit_report_fields(const FitJobResult& r) {
     const FrameEstimate& fr = f.frame();
     j["quadric"] = fr.quadric ? quadric_json(*fr.quadric) : json(nullptr);
     j["frame"] = frame_json(fr.frame, fr.reason);
-    if (f.spherical) {
-      const SphericalFit& s = *f.spherical;
+    if (const auto* sphere = std::get_if<SphericalFit>(&f.fit)) {
+      const SphericalFit& s = *sphere;
       j["closed"] = s.closed;
       if (s.closed)
         j["seam"] = {{"gap_mm", s.seam.gap},
@@ -174,7 +174,7 @@ json fit_report_fields(const FitJobResult& r) {
       j["poles"] = {{"north", pole_json(s.north, s.north_pole, s.north_cap)},
                     {"south", pole_json(s.south, s.south_pole, s.south_cap)}};
     } else {
-      const CylindricalFit& c = *f.cylindrical;
+      const CylindricalFit& c = std::get<CylindricalFit>(f.fit);
       j["closed"] = c.closed;
       if (c.closed)
         j["seam"] = {{"gap_mm", c.seam.gap},
@@ -236,8 +236,8 @@ std::map<std::string, std::string> render_fit_outputs(const FitJobResult& r) {
     igs.add(surface.surface(), "FITTED SURFACE");
     stp.add(surface.surface(), "fitted surface");
     x3d.add(surface.surface(), "surface");
-    if (surface.spherical) {
-      const SphericalFit& s = *surface.spherical;
+    if (const auto* sphere = std::get_if<SphericalFit>(&surface.fit)) {
+      const SphericalFit& s = *sphere;
       const std::pair<const std::optional<PoleCap>*, std::string> caps[] = {
           {&s.north_cap, "north"}, {&s.south_cap, "south"}};
       for (const auto& [cap, which] : caps)

@@ -104,7 +104,7 @@ Figure surface_preview(const FitJobResult& r) {
   const RotationalFit& f = std::get<RotationalFit>(r.fit);
   const FitReport& rep = f.report();
   Figure fig(800, 1100);
-  fig.title = (f.method == FitMethod::spherical ? "Spherical" : "Cylindrical") +
+  fig.title = (f.method() == FitMethod::spherical ? "Spherical" : "Cylindrical") +
               std::string(" fit of ") + r.input.filename().string() + ": rms " + mm(rep.error.rms);
   const Eigen::Matrix3Xd local = f.frame().frame.to_local(r.points);
   const Eigen::VectorXd& d = rep.signed_distance;
@@ -115,7 +115,7 @@ Figure surface_preview(const FitJobResult& r) {
   for (Eigen::Index k = 0; k < local.cols(); ++k) {
     const auto i = static_cast<std::size_t>(k);
     theta[i] = degrees_in_turn(std::atan2(local(1, k), local(0, k)));
-    second[i] = f.method == FitMethod::spherical
+    second[i] = f.method() == FitMethod::spherical
                     ? std::acos(std::clamp(local(2, k) / local.col(k).norm(), -1.0, 1.0)) *
                           kDegreesPerRadian
                     : local(2, k);
@@ -127,9 +127,9 @@ Figure surface_preview(const FitJobResult& r) {
   by_theta.x_range = AxisRange{0, 360};
   by_theta.x_tick_step = 45;
   Plot& by_second = fig.add_panel();
-  by_second.title = f.method == FitMethod::spherical ? "Signed deviation against polar angle φ"
-                                                     : "Signed deviation against height z";
-  by_second.x_label = f.method == FitMethod::spherical
+  by_second.title = f.method() == FitMethod::spherical ? "Signed deviation against polar angle φ"
+                                                       : "Signed deviation against height z";
+  by_second.x_label = f.method() == FitMethod::spherical
                           ? "polar angle φ from the frame's k axis [deg]"
                           : "height z along the frame's k axis [mm]";
   deviation_panel(by_second, second, d, stride, rep.error.rms);

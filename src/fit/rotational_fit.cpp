@@ -10,14 +10,20 @@ namespace polarform {
 
 std::string to_string(FitMethod m) { return m == FitMethod::spherical ? "spherical" : "cylindrical"; }
 
+FitMethod RotationalFit::method() const {
+  return std::holds_alternative<SphericalFit>(fit) ? FitMethod::spherical : FitMethod::cylindrical;
+}
 const NurbsSurface& RotationalFit::surface() const {
-  return method == FitMethod::spherical ? spherical->surface : cylindrical->surface;
+  return std::visit([](const auto& f) -> const NurbsSurface& { return f.surface; }, fit);
 }
 const FitReport& RotationalFit::report() const {
-  return method == FitMethod::spherical ? spherical->report : cylindrical->report;
+  return std::visit([](const auto& f) -> const FitReport& { return f.report; }, fit);
+}
+FitReport& RotationalFit::report() {
+  return std::visit([](auto& f) -> FitReport& { return f.report; }, fit);
 }
 const FrameEstimate& RotationalFit::frame() const {
-  return method == FitMethod::spherical ? spherical->frame : cylindrical->frame;
+  return std::visit([](const auto& f) -> const FrameEstimate& { return f.frame; }, fit);
 }
 
 namespace {
@@ -46,12 +52,8 @@ Attempt attempt(FitMethod m, const Eigen::Matrix3Xd& points, const RotationalFit
 }
 
 RotationalFit result(FitMethod m, Attempt& a, std::string reason) {
-  RotationalFit r;
-  r.method = m;
-  r.reason = std::move(reason);
-  r.spherical = std::move(a.sph);
-  r.cylindrical = std::move(a.cyl);
-  return r;
+  if (m == FitMethod::spherical) return {std::move(*a.sph), std::move(reason)};
+  return {std::move(*a.cyl), std::move(reason)};
 }
 
 FitMethod other(FitMethod m) {
@@ -110,7 +112,7 @@ RotationalFit fit_rotational(const std::filesystem::path& file, const Rotational
   const PointCloud cloud = read_point_cloud(file, read);
   const double t = clock.lap();
   RotationalFit fit = fit_rotational(cloud.points, options);
-  FitReport& r = fit.method == FitMethod::spherical ? fit.spherical->report : fit.cylindrical->report;
+  FitReport& r = fit.report();
   r.times.read = t;
   r.times.total += t;
   return fit;

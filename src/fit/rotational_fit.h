@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <variant>
 
 #include "src/fit/cylindrical_fit.h"
 #include "src/fit/spherical_fit.h"
@@ -24,13 +25,13 @@ struct RotationalFitOptions {
 };
 
 struct RotationalFit {
-  FitMethod method = FitMethod::spherical;
+  std::variant<SphericalFit, CylindricalFit> fit;
   std::string reason;
-  std::optional<SphericalFit> spherical;      // set when method is spherical
-  std::optional<CylindricalFit> cylindrical;  // set when method is cylindrical
 
+  FitMethod method() const;
   const NurbsSurface& surface() const;
   const FitReport& report() const;
+  FitReport& report();
   const FrameEstimate& frame() const;
 };
 

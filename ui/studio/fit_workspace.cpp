@@ -196,7 +196,7 @@ void FitWorkspace::show_fit() {
   if (const auto* surface = std::get_if<RotationalFit>(&fit_->result.fit)) {
     mesh = make_surface_mesh(surface->surface(), origin, kSurfaceRgb, 96, 96);
     add_control_net(net, surface->surface(), origin, kNetRgb);
-    if (const auto& s = surface->spherical)
+    if (const auto* s = std::get_if<SphericalFit>(&surface->fit))
       for (const auto* cap :
            {s->north_cap ? &*s->north_cap : nullptr, s->south_cap ? &*s->south_cap : nullptr})
         if (cap) {

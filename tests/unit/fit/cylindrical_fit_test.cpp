@@ -133,19 +133,19 @@ TEST(RotationalFit, ChoosesTheMethodFromTheQuadricAndTheError) {
   // A flattened sphere-like shape: an ellipsoid, fitted spherically.
   const RotationalFit a = fit_rotational(m(test::spherical_cloud(
       [](double phi, double) { return 20 / std::sqrt(1 + 0.3 * std::cos(phi) * std::cos(phi)); }, 20000, 0, kPi, 0, 2 * kPi, 32)), o);
-  EXPECT_EQ(a.method, FitMethod::spherical);
+  EXPECT_EQ(a.method(), FitMethod::spherical);
   EXPECT_NE(a.reason.find("real ellipsoid"), std::string::npos) << a.reason;
   EXPECT_LT(a.report().error.max, 2e-2);  // an 8 x 8 bicubic F: within 0.1% of the size
   // A waisted, open-ended tube: a hyperboloid of one sheet, fitted cylindrically.
   const RotationalFit b = fit_rotational(m(test::cylindrical_cloud(
       [](double z, double) { return std::sqrt(100 + 0.5 * z * z); }, 20000, -20, 20, 0, 2 * kPi, 33)), o);
-  EXPECT_EQ(b.method, FitMethod::cylindrical);
+  EXPECT_EQ(b.method(), FitMethod::cylindrical);
   EXPECT_NE(b.reason.find("hyperboloid of one sheet"), std::string::npos) << b.reason;
   EXPECT_LT(b.report().error.max, 2e-2);
   // Forced.
   o.method = FitMethod::cylindrical;
   const RotationalFit c = fit_rotational(m(test::cylindrical_cloud([](double, double) { return 9.0; }, 5000, 0, 30, 0, 2 * kPi, 34)), o);
-  EXPECT_EQ(c.method, FitMethod::cylindrical);
+  EXPECT_EQ(c.method(), FitMethod::cylindrical);
   EXPECT_EQ(c.surface().degree_u(), 1);
 }
 
