@@ -2,10 +2,11 @@
 
 #include <tinyxml2.h>
 
+#include "export/colormap.h"
 #include "export/exchange_text.h"
 #include "export/x3d_writer.h"
 #include "src/error.h"
-#include "export/colormap.h"
+#include "src/nurbs/tessellation.h"
 
 namespace polarform {
 
@@ -57,19 +58,19 @@ std::string field_x3d(const ScalarFieldSurface& f, const std::string& title, int
   scene->InsertEndChild(sw);
   const double lo = f.min_value, hi = f.max_value;
   const NurbsSurface& S = f.surface;
+  const SurfaceTessellation grid = tessellate(S, rows, cols);
+  const int nu = static_cast<int>(grid.u.size()), nv = static_cast<int>(grid.v.size());
   std::string points, colors, index;
-  for (int i = 0; i <= rows; ++i)
-    for (int j = 0; j <= cols; ++j) {
-      const double u = S.front_u() + (S.back_u() - S.front_u()) * i / rows;
-      const double v = S.front_v() + (S.back_v() - S.front_v()) * j / cols;
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
       double value = 0.0;
-      f.F.point(u, v, &value);
-      append(points, S.point(u, v));
+      f.F.point(grid.u[i], grid.v[j], &value);
+      append(points, grid.points[i * nv + j]);
       append(colors, sequential_color(value, lo, hi));
     }
-  for (int i = 0; i < rows; ++i)
-    for (int j = 0; j < cols; ++j) {
-      const int a = i * (cols + 1) + j, b = a + cols + 1;
+  for (int i = 0; i + 1 < nu; ++i)
+    for (int j = 0; j + 1 < nv; ++j) {
+      const int a = i * nv + j, b = a + nv;
       index += std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(b + 1) + " " +
                std::to_string(a + 1) + " -1 ";
     }
