@@ -6,6 +6,7 @@
 #include "export/colormap.h"
 #include "export/x3d_writer.h"
 #include "src/error.h"
+#include "src/nurbs/tessellation.h"
 
 namespace polarform {
 
@@ -15,20 +16,20 @@ std::string field_x3d(const ScalarFieldSurface& f, const std::string& title, int
   const double lo = f.min_value, hi = f.max_value;
   const NurbsSurface& S = f.surface;
   // The surface tessellated, each vertex coloured by the value F there (Bae 2002, §5.3).
+  const SurfaceTessellation grid = tessellate(S, rows, cols);
+  const int nu = static_cast<int>(grid.u.size()), nv = static_cast<int>(grid.v.size());
   std::vector<Eigen::Vector3d> points, colors;
-  for (int i = 0; i <= rows; ++i)
-    for (int j = 0; j <= cols; ++j) {
-      const double u = S.front_u() + (S.back_u() - S.front_u()) * i / rows;
-      const double v = S.front_v() + (S.back_v() - S.front_v()) * j / cols;
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
       double value = 0.0;
-      f.F.point(u, v, &value);
-      points.push_back(S.point(u, v));
+      f.F.point(grid.u[i], grid.v[j], &value);
+      points.push_back(grid.points[i * nv + j]);
       colors.push_back(sequential_color(value, lo, hi));
     }
   std::vector<std::array<int, 4>> quads;
-  for (int i = 0; i < rows; ++i)
-    for (int j = 0; j < cols; ++j) {
-      const int a = i * (cols + 1) + j, b = a + cols + 1;
+  for (int i = 0; i + 1 < nu; ++i)
+    for (int j = 0; j + 1 < nv; ++j) {
+      const int a = i * nv + j, b = a + nv;
       quads.push_back({a, b, b + 1, a + 1});
     }
   // The control net as points coloured by the value each control point carries.

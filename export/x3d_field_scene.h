@@ -11,7 +11,8 @@
 
 namespace polarform {
 
-// rows x cols quads of the tessellation (both >= 1).
+// The tessellation (src/nurbs/tessellation.h) takes rows equal steps in u and cols in v, plus
+// every distinct interior knot (both >= 1).
 std::string field_x3d(const ScalarFieldSurface& field, const std::string& title, int rows = 64,
                       int cols = 128);
 

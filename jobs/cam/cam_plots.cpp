@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "src/number_text.h"
+#include "src/nurbs/tessellation.h"
 #include "src/units.h"
 
 namespace polarform {
@@ -58,12 +59,6 @@ Series series(std::string label, std::vector<double> x, std::vector<double> y,
   s.style = style;
   s.color = std::move(color);
   return s;
-}
-
-std::vector<Eigen::Vector2d> sample_curve(const NurbsCurve2d& c, int count) {
-  std::vector<Eigen::Vector2d> out;
-  for (int k = 0; k <= count; ++k) out.push_back(c(c.front() + (c.back() - c.front()) * k / count));
-  return out;
 }
 
 void add_points(Plot& plot, std::string label, const std::vector<Eigen::Vector2d>& points,
@@ -191,7 +186,8 @@ Figure profile_figure(const CamDesignStage& d, const CamAnalysisStage& a,
     f.title = "Cam profile: degree " + std::to_string(curve.degree()) + ", " +
               std::to_string(curve.size()) + " control points, " +
               std::to_string(c.conversion.arcs.size()) + " arcs";
-    add_points(plot, "contour (NURBS)", sample_curve(curve, 2000), Series::Style::line, "#0072b2");
+    add_points(plot, "contour (NURBS)", tessellate(curve, 2000).points, Series::Style::line,
+               "#0072b2");
     add_points(plot, "control polygon", curve.control_points(), Series::Style::line_markers,
                "#cc79a7");
     add_circle(plot, "base circle", d.project.cam.base_radius, Series::Style::dashed);
@@ -206,12 +202,12 @@ Figure profile_figure(const CamDesignStage& d, const CamAnalysisStage& a,
     plot.x_label = "arc length on the pitch cylinder [mm]";
     plot.y_label = "z [mm]";
     std::vector<double> x, z;
-    double psi0 = 0.0, previous = 0.0;
-    for (int k = 0; k <= 2000; ++k) {
-      const Eigen::Vector3d p = track(track.front() + (track.back() - track.front()) * k / 2000);
-      double psi = std::atan2(p.y(), p.x());
-      if (k == 0) psi0 = previous = psi;
-      psi = previous + std::remainder(psi - previous, 2 * std::numbers::pi);
+    const NurbsCurve3d::Points centre = tessellate(track, 2000).points;
+    const double psi0 = std::atan2(centre.front().y(), centre.front().x());
+    double previous = psi0;
+    for (const Eigen::Vector3d& p : centre) {
+      const double psi =
+          previous + std::remainder(std::atan2(p.y(), p.x()) - previous, 2 * std::numbers::pi);
       previous = psi;
       x.push_back((psi - psi0) * d.project.cam.cylinder_radius);
       z.push_back(p.z());

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "src/nurbs/tessellation.h"
 #include "src/units.h"
 
 namespace polarform {
@@ -80,9 +81,7 @@ Figure polar_preview(const FitJobResult& r) {
   }
   shape.add(std::move(data));
   Series curve{"fitted NURBS curve", {}, {}, Series::Style::line, ""};
-  for (int i = 0; i <= 2000; ++i) {
-    const Eigen::Vector2d p =
-        f.curve.point(f.curve.front() + (f.curve.back() - f.curve.front()) * i / 2000.0);
+  for (const Eigen::Vector2d& p : tessellate(f.curve, 2000).points) {
     curve.x.push_back(p.x());
     curve.y.push_back(p.y());
   }

@@ -5,6 +5,7 @@
 
 #include "designers/cam/contour_polar_function.h"
 #include "jobs/fit/fit_plots.h"
+#include "src/nurbs/tessellation.h"
 #include "src/units.h"
 
 namespace polarform {
@@ -146,9 +147,7 @@ Figure scan_profile_figure(const ScanCamJobResult& r) {
   }
   p.add(std::move(data));
   Series fit{"fitted NURBS profile", {}, {}, Series::Style::line, ""};
-  const NurbsCurve2d& c = s.fit.curve;
-  for (int i = 0; i <= 2000; ++i) {
-    const Eigen::Vector2d q = c.point(c.front() + (c.back() - c.front()) * i / 2000.0);
+  for (const Eigen::Vector2d& q : tessellate(s.fit.curve, 2000).points) {
     fit.x.push_back(q.x());
     fit.y.push_back(q.y());
   }

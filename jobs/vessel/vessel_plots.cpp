@@ -6,6 +6,7 @@
 #include <string>
 
 #include "src/number_text.h"
+#include "src/nurbs/tessellation.h"
 #include "src/units.h"
 
 namespace polarform {
@@ -131,10 +132,8 @@ Figure profile_figure(const VesselSolveStage& r, const VesselConversionStage* co
       polygon.x.push_back(p.x()), polygon.y.push_back(p.y());
     plot.add(std::move(polygon));
     Series curve{"profile (NURBS)", {}, {}, Series::Style::line, kDesignColor};
-    for (int k = 0; k <= 2000; ++k) {
-      const Eigen::Vector2d p = c(c.front() + (c.back() - c.front()) * k / 2000);
+    for (const Eigen::Vector2d& p : tessellate(c, 2000).points)
       curve.x.push_back(p.x()), curve.y.push_back(p.y());
-    }
     plot.add(std::move(curve));
   } else {
     f.title = "Head profile (not converted)";

@@ -8,6 +8,7 @@
 
 #include "export/plot_style.h"
 #include "src/number_text.h"
+#include "src/nurbs/tessellation.h"
 #include "src/units.h"
 
 namespace polarform {
@@ -84,8 +85,7 @@ Figure viz_preview_figure(const VizJobResult& r) {
                {},
                Series::Style::line,
                c};
-    for (int j = 0; j <= 400; ++j) {
-      const double v = S.front_v() + (S.back_v() - S.front_v()) * j / 400.0;
+    for (double v : tessellation_parameters(S.knots_v(), S.front_v(), S.back_v(), 400)) {
       fit.x.push_back(coordinates(r, u, v).theta * kDegreesPerRadian);
       fit.y.push_back(value(r, u, v));
     }
@@ -125,8 +125,7 @@ Figure viz_preview_figure(const VizJobResult& r) {
                {},
                Series::Style::line,
                c};
-    for (int i = 0; i <= 400; ++i) {
-      const double u = S.front_u() + (S.back_u() - S.front_u()) * i / 400.0;
+    for (double u : tessellation_parameters(S.knots_u(), S.front_u(), S.back_u(), 400)) {
       fit.x.push_back(coordinates(r, u, v).a * a_unit);
       fit.y.push_back(value(r, u, v));
     }

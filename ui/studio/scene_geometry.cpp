@@ -1,8 +1,6 @@
 #include "ui/studio/scene_geometry.h"
 
-#include <algorithm>
-#include <cmath>
-
+#include "src/nurbs/tessellation.h"
 #include "ui/studio/colors.h"
 
 namespace polarform::studio {
@@ -15,19 +13,6 @@ void push3(std::vector<float>& v, const Eigen::Vector3d& p) {
 }
 
 void push_rgb(std::vector<float>& v, const float* rgb) { v.insert(v.end(), rgb, rgb + 3); }
-
-// Parameters over [a, b] in `count` steps that include every distinct knot in the range.
-std::vector<double> parameters(const Knots& knots, double a, double b, int count) {
-  std::vector<double> t;
-  for (int i = 0; i <= count; ++i) t.push_back(a + (b - a) * i / count);
-  for (double k : knots)
-    if (k > a && k < b) t.push_back(k);
-  std::sort(t.begin(), t.end());
-  t.erase(
-      std::unique(t.begin(), t.end(), [](double x, double y) { return std::abs(x - y) < 1e-12; }),
-      t.end());
-  return t;
-}
 
 }  // namespace
 
@@ -60,28 +45,12 @@ PointSet make_point_set(const Eigen::Matrix3Xd& points, const Eigen::Vector3d& o
 
 TriangleMesh make_surface_mesh(const NurbsSurface& surface, const Eigen::Vector3d& origin,
                                const float* rgb, int samples_u, int samples_v) {
-  const std::vector<double> us =
-      parameters(surface.knots_u(), surface.front_u(), surface.back_u(), samples_u);
-  const std::vector<double> vs =
-      parameters(surface.knots_v(), surface.front_v(), surface.back_v(), samples_v);
-  const int nu = static_cast<int>(us.size()), nv = static_cast<int>(vs.size());
+  const SurfaceTessellation grid = tessellate(surface, samples_u, samples_v);
+  const int nu = static_cast<int>(grid.u.size()), nv = static_cast<int>(grid.v.size());
   TriangleMesh mesh;
-  std::vector<Eigen::Vector3d> points(nu * nv), normals(nu * nv);
-  for (int i = 0; i < nu; ++i)
-    for (int j = 0; j < nv; ++j) {
-      points[i * nv + j] = surface.point(us[i], vs[j]);
-      normals[i * nv + j] = surface.normal(us[i], vs[j]);
-    }
-  // Poles and other degenerate points: the normal of a neighbouring sample along u.
-  for (int i = 0; i < nu; ++i)
-    for (int j = 0; j < nv; ++j)
-      if (normals[i * nv + j].squaredNorm() < 0.5) {
-        const int k = i + (i + 1 < nu ? 1 : -1);
-        if (k >= 0 && k < nu) normals[i * nv + j] = normals[k * nv + j];
-      }
   for (int k = 0; k < nu * nv; ++k) {
-    push3(mesh.positions, points[k] - origin);
-    push3(mesh.normals, normals[k]);
+    push3(mesh.positions, grid.points[k] - origin);
+    push3(mesh.normals, grid.normals[k]);
     push_rgb(mesh.colors, rgb);
   }
   for (int i = 0; i + 1 < nu; ++i)

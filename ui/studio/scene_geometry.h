@@ -44,8 +44,8 @@ PointSet make_point_set(const Eigen::Matrix3Xd& points, const Eigen::Vector3d& o
 PointSet make_point_set(const Eigen::Matrix3Xd& points, const Eigen::Vector3d& origin,
                         const Eigen::VectorXd& values, double scale);
 
-// The surface sampled on a (samples_u + 1) x (samples_v + 1) grid, each knot span sampled at
-// least `per_span` times, with unit normals (degenerate ones from the neighbours).
+// The surface tessellated (src/nurbs/tessellation.h): samples_u and samples_v equal steps plus
+// every distinct interior knot, with unit normals (degenerate ones from the neighbour along u).
 TriangleMesh make_surface_mesh(const NurbsSurface& surface, const Eigen::Vector3d& origin,
                                const float* rgb, int samples_u = 64, int samples_v = 64);
 // Appends a mesh (indices shifted).

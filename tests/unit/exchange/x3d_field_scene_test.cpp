@@ -14,6 +14,7 @@
 
 #include "export/colormap.h"
 #include "src/error.h"
+#include "src/nurbs/tessellation.h"
 
 namespace polarform {
 namespace {
@@ -60,15 +61,21 @@ TEST(X3dFieldScene, ColouredTessellationOnTheSurfaceBeforeTheExactPatch) {
   const std::vector<double> xyz =
       numbers(faces->FirstChildElement("Coordinate")->Attribute("point"));
   const std::vector<double> rgb = numbers(faces->FirstChildElement("Color")->Attribute("color"));
-  ASSERT_EQ(xyz.size(), 3u * (rows + 1) * (cols + 1));
-  ASSERT_EQ(rgb.size(), xyz.size());
-  EXPECT_EQ(numbers(faces->Attribute("coordIndex")).size(), 5u * rows * cols);
+  // The grid: rows and cols equal steps and every interior knot (src/nurbs/tessellation.h).
   const NurbsSurface& S = f.surface;
-  for (int i = 0; i <= rows; ++i)
-    for (int j = 0; j <= cols; ++j) {
-      const double u = S.front_u() + (S.back_u() - S.front_u()) * i / rows;
-      const double v = S.front_v() + (S.back_v() - S.front_v()) * j / cols;
-      const std::size_t k = 3 * static_cast<std::size_t>(i * (cols + 1) + j);
+  const std::vector<double> us =
+      tessellation_parameters(S.knots_u(), S.front_u(), S.back_u(), rows);
+  const std::vector<double> vs =
+      tessellation_parameters(S.knots_v(), S.front_v(), S.back_v(), cols);
+  const std::size_t nu = us.size(), nv = vs.size();
+  EXPECT_GT(nu, std::size_t(rows + 1));  // the knots of F and the base arcs add rows
+  ASSERT_EQ(xyz.size(), 3 * nu * nv);
+  ASSERT_EQ(rgb.size(), xyz.size());
+  EXPECT_EQ(numbers(faces->Attribute("coordIndex")).size(), 5 * (nu - 1) * (nv - 1));
+  for (std::size_t i = 0; i < nu; ++i)
+    for (std::size_t j = 0; j < nv; ++j) {
+      const double u = us[i], v = vs[j];
+      const std::size_t k = 3 * (i * nv + j);
       const Eigen::Vector3d on = S.point(u, v);
       double value = 0.0;
       f.F.point(u, v, &value);
