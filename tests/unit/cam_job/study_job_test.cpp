@@ -1,7 +1,7 @@
 // The study job on examples/cams/roller.xml over 1e-2:1e-4 mm (two steps per decade): study.csv
 // has one row per tolerance with every method's measured error within it, the quartic base needs
 // fewer control points than the RQB base, deviation.csv follows the power laws of DESIGN.md §4.3,
-// the plots and report.json are written, and `polarform study` writes the same tables.
+// and the plots and report.json are written.
 #include "jobs/study/study_job.h"
 
 #include <gtest/gtest.h>
@@ -10,26 +10,12 @@
 
 #include "cam_job_support.h"
 #include "closed_forms.h"
+#include "study_run.h"
 
 namespace polarform {
 namespace {
 
 using namespace cam_job_test;
-
-struct StudyRun {
-  StudyRun() : dir("study") {
-    result = run_study_job(load_example("roller"), log_tolerances(1e-2, 1e-4, 2));
-    files = write_study_outputs(result, "roller", dir.path());
-  }
-  StudyJobResult result;
-  ScratchDir dir;
-  std::vector<std::string> files;
-};
-
-const StudyRun& study() {
-  static const StudyRun run;
-  return run;
-}
 
 TEST(StudyJob, StudyCsvHasOneRowPerToleranceWithinItsTolerance) {
   const Csv csv = read_csv(study().dir / "study.csv");
@@ -108,16 +94,6 @@ TEST(StudyJob, WritesPlotsAndReport) {
     for (const char* method : {"quasi_uniform", "rqb", "cubic_through_points"})
       EXPECT_LE(row[method]["max_radial_error_mm"].get<double>(),
                 row["tolerance_mm"].get<double>());
-}
-
-TEST(StudyJob, CliWritesTheSameTables) {
-  const ScratchDir scratch("study_cli");
-  const CliRun run = run_cli({"study", (kExamples / "roller.xml").string(), "--out",
-                              (scratch / "out").string(), "--tol", "1e-2:1e-4", "-q"},
-                             scratch);
-  ASSERT_EQ(run.status, 0) << run.err;
-  for (const char* table : {"study.csv", "deviation.csv", "study.svg", "deviation.svg"})
-    EXPECT_TRUE(slurp(scratch / "out" / table) == slurp(study().dir / table)) << table;
 }
 
 }  // namespace

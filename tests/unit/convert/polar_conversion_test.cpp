@@ -5,25 +5,21 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
 #include <numbers>
 #include <random>
 
 #include "designers/cam/contour_polar_function.h"
 #include "designers/cam/displacement_polar_function.h"
 #include "designers/convert/polar_conversion.h"
-#include "jobs/project/cam_project.h"
+#include "tests/support/example_cams.h"
 
 namespace polarform {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-const std::filesystem::path kExamples = std::filesystem::path(POLARFORM_SOURCE_DIR) / "examples" / "cams";
 
 PolarFunction example_contour(const char* name) {
-  std::vector<std::string> warnings;
-  const CamProject p = read_cam_project(kExamples / name, warnings);
-  return cam_polar_function(make_plate_cam(p.cam));
+  return cam_polar_function(make_plate_cam(test::example_cam_design(name)));
 }
 
 // Independent check: the final NURBS at n uniform parameters against R at each point's own
@@ -61,11 +57,10 @@ TEST_P(ExampleConversion, MeasuredErrorMeetsEveryTolerance) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Cams, ExampleConversion,
-                         testing::Values("roller.xml", "flat_faced.xml", "offset_roller.xml",
-                                         "polynomial.xml"));
+                         testing::Values("roller", "flat_faced", "offset_roller", "polynomial"));
 
 TEST(PolarConversion, RqbBaseMeetsToleranceWithMoreArcs) {
-  const PolarFunction R = example_contour("roller.xml");
+  const PolarFunction R = example_contour("roller");
   ConversionOptions quartic, rqb;
   quartic.tolerance = rqb.tolerance = 1e-4;
   rqb.base = ArcKind::rqb;
@@ -99,7 +94,7 @@ TEST(PolarConversion, ConstantRadiusIsAnExactCircle) {
 }
 
 TEST(PolarConversion, CurveIsTheProductOfFAndTheBaseCircle) {
-  const PolarFunction R = example_contour("offset_roller.xml");
+  const PolarFunction R = example_contour("offset_roller");
   ConversionOptions options;
   options.tolerance = 1e-5;
   const PolarConversion c = convert_polar_function(R, options);
@@ -119,10 +114,9 @@ TEST(PolarConversion, CurveIsTheProductOfFAndTheBaseCircle) {
 // Radial knife-edge with polynomial laws: R is a piecewise polynomial, represented exactly, so
 // the whole error is the base circle's synchronization.
 TEST(PolarConversion, PolynomialLawsAreRepresentedExactly) {
-  std::vector<std::string> warnings;
-  CamProject p = read_cam_project(kExamples / "polynomial.xml", warnings);
-  p.cam.follower = {FollowerKind::KnifeEdge, 0.0, 0.0};
-  const PolarFunction R = cam_polar_function(make_plate_cam(p.cam));
+  CamDesign cam = test::example_cam_design("polynomial");
+  cam.follower = {FollowerKind::KnifeEdge, 0.0, 0.0};
+  const PolarFunction R = cam_polar_function(make_plate_cam(cam));
   ASSERT_TRUE(R.exact);
   ConversionOptions options;
   options.tolerance = 1e-6;
@@ -137,7 +131,7 @@ TEST(PolarConversion, PolynomialLawsAreRepresentedExactly) {
 }
 
 TEST(PolarConversion, TighterToleranceNeverNeedsFewerArcs) {
-  const PolarFunction R = example_contour("roller.xml");
+  const PolarFunction R = example_contour("roller");
   std::size_t previous = 0;
   for (double tol : {1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7}) {
     ConversionOptions options;

@@ -5,12 +5,10 @@
 
 #include <gtest/gtest.h>
 
-#include <filesystem>
-
 #include "designers/cam/contour_polar_function.h"
-#include "jobs/project/cam_project.h"
 #include "src/error.h"
 #include "src/units.h"
+#include "tests/support/example_cams.h"
 
 namespace polarform {
 namespace {
@@ -34,10 +32,7 @@ TEST(LogTolerances, RejectsBadRanges) {
 }
 
 TEST(ToleranceStudy, EveryMethodMeetsEveryTolerance) {
-  std::vector<std::string> warnings;
-  const CamProject p = read_cam_project(
-      std::filesystem::path(POLARFORM_SOURCE_DIR) / "examples/cams/roller.xml", warnings);
-  const PolarFunction R = cam_polar_function(make_plate_cam(p.cam));
+  const PolarFunction R = cam_polar_function(make_plate_cam(test::example_cam_design("roller")));
   const std::vector<double> tols = log_tolerances(1e-2, 1e-5, 1);
   int calls = 0;
   const std::vector<StudyRow> rows = tolerance_study(R, tols, [&](double) { ++calls; });

@@ -1,6 +1,6 @@
-// Cam project files: the examples load cleanly and round-trip exactly; every kind of broken file
-// gives its own error naming file, line and field; random corruption never escapes as anything
-// but InputError.
+// Cam project files: the examples load cleanly, round-trip exactly and are the designs the
+// designer tests build in code; every kind of broken file gives its own error naming file, line
+// and field; random corruption never escapes as anything but InputError.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -11,6 +11,7 @@
 
 #include "jobs/project/cam_project.h"
 #include "src/error.h"
+#include "tests/support/example_cams.h"
 
 namespace polarform {
 namespace {
@@ -58,6 +59,23 @@ TEST(CamProject, ExamplesLoadWithoutWarningsAndRoundTripExactly) {
     ++count;
   }
   EXPECT_EQ(count, 5);
+}
+
+// The tests of designers/ build the examples in code: every file reads to exactly that design
+// (segment starts, given in a file as the previous end in degrees, to rounding).
+TEST(CamProject, ExamplesAreTheDesignsTheDesignerTestsBuild) {
+  for (const std::string& name : test::example_cam_names()) {
+    SCOPED_TRACE(name);
+    std::vector<std::string> warnings;
+    CamDesign read = read_cam_project(kExamples / (name + ".xml"), warnings).cam;
+    const CamDesign built = test::example_cam_design(name);
+    ASSERT_EQ(read.segments.size(), built.segments.size());
+    for (std::size_t k = 0; k < read.segments.size(); ++k) {
+      EXPECT_NEAR(read.segments[k].start, built.segments[k].start, 1e-14) << "segment " << k;
+      read.segments[k].start = built.segments[k].start;
+    }
+    EXPECT_TRUE(read == built);
+  }
 }
 
 TEST(CamProject, ReadsTheRollerExample) {

@@ -13,9 +13,9 @@
 
 #include "designers/cam/cam_design.h"
 #include "designers/scan/nominal_comparison.h"
-#include "jobs/project/cam_project.h"
 #include "src/error.h"
 #include "src/units.h"
+#include "tests/support/example_cams.h"
 #include "tests/support/synthetic_scans.h"
 
 namespace polarform {
@@ -24,10 +24,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 
 PlateCam example_cam(const std::string& name) {
-  std::vector<std::string> warnings;
-  const CamProject p =
-      read_cam_project(std::string(POLARFORM_SOURCE_DIR) + "/examples/cams/" + name, warnings);
-  return make_plate_cam(p.cam);
+  return make_plate_cam(test::example_cam_design(name));
 }
 
 // max |s_recovered(θ) − s_nominal(θ)| over a dense grid of cam angles.
@@ -44,7 +41,7 @@ double max_displacement_error(const ScannedCam& scan, const PlateCam& cam) {
 }
 
 TEST(ScannedCam, RollerProfileScanWithNominalRecoversPhaseAndMotion) {
-  const PlateCam cam = example_cam("roller.xml");
+  const PlateCam cam = example_cam("roller");
   CamScanSetup setup;
   setup.centre = Eigen::Vector2d(12.5, -7.25);
   setup.phase = 30.0 / kDegreesPerRadian;
@@ -77,7 +74,7 @@ TEST(ScannedCam, RollerProfileScanWithNominalRecoversPhaseAndMotion) {
 }
 
 TEST(ScannedCam, MirroredScanIsDetected) {
-  const PlateCam cam = example_cam("offset_roller.xml");
+  const PlateCam cam = example_cam("offset_roller");
   CamScanSetup setup;
   setup.phase = 200.0 / kDegreesPerRadian;
   setup.sigma = 0.002;
@@ -94,7 +91,7 @@ TEST(ScannedCam, MirroredScanIsDetected) {
 }
 
 TEST(ScannedCam, FlatFacedProfileWithoutNominalRecoversMotionAndBaseRadius) {
-  const PlateCam cam = example_cam("flat_faced.xml");
+  const PlateCam cam = example_cam("flat_faced");
   CamScanSetup setup;  // the cam frame is the scan's: no phase, centre at the origin
   setup.sigma = 0.003;
   const Eigen::Matrix3Xd points = cam_profile_scan(cam, setup);
@@ -110,7 +107,7 @@ TEST(ScannedCam, FlatFacedProfileWithoutNominalRecoversMotionAndBaseRadius) {
 }
 
 TEST(ScannedCam, ThreeDimensionalPlateScanFindsAxisFacesAndMotion) {
-  const PlateCam cam = example_cam("roller.xml");
+  const PlateCam cam = example_cam("roller");
   CamScanSetup setup;
   setup.phase = 75.0 / kDegreesPerRadian;
   setup.sigma = 0.004;
@@ -142,7 +139,7 @@ TEST(ScannedCam, ThreeDimensionalPlateScanFindsAxisFacesAndMotion) {
 }
 
 TEST(ScannedCam, RefusesAScanWithoutBoreOrCentre) {
-  const PlateCam cam = example_cam("roller.xml");
+  const PlateCam cam = example_cam("roller");
   CamScanSetup setup;
   setup.bore_points = 0;
   const Eigen::Matrix3Xd points = cam_profile_scan(cam, setup);
