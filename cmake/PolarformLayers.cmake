@@ -6,8 +6,9 @@
 include_guard(GLOBAL)
 include(GNUInstallDirs)
 
-# polarform_include_root(TARGET FOLDER [PRIVATE]): FOLDER (relative to the source tree, e.g. "src"
-# or "ui/cli") becomes includable as "FOLDER/..." by TARGET and, unless PRIVATE, by whatever links it.
+# polarform_include_root(TARGET FOLDER [PRIVATE|INTERFACE]): FOLDER (relative to the source tree,
+# e.g. "src" or "ui/cli") becomes includable as "FOLDER/..." by TARGET and, unless PRIVATE, by
+# whatever links it (INTERFACE: only by what links it, for header-only libraries).
 function(polarform_include_root target folder)
   set(root ${PROJECT_BINARY_DIR}/include-roots/${target})
   get_filename_component(parent ${root}/${folder} DIRECTORY)
@@ -15,6 +16,8 @@ function(polarform_include_root target folder)
   file(CREATE_LINK ${PROJECT_SOURCE_DIR}/${folder} ${root}/${folder} SYMBOLIC)
   if(ARGV2 STREQUAL "PRIVATE")
     target_include_directories(${target} PRIVATE ${root})
+  elseif(ARGV2 STREQUAL "INTERFACE")
+    target_include_directories(${target} INTERFACE ${root})
   else()
     target_include_directories(${target} PUBLIC
       $<BUILD_INTERFACE:${root}> $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/polarform>)

@@ -16,15 +16,18 @@ set(allowed_export src export)
 set(allowed_jobs src designers export jobs)
 set(allowed_ui/cli src designers export jobs ui/cli)
 set(allowed_ui/studio src designers export jobs ui/studio)
-# A test folder tests/<layer>/... may include what its layer may, the test folder itself and the
-# test support (tests/support includes designers/, so only tests of designers and above use it).
+# Tests mirror the layers. The test support of a layer, tests/support/<layer>/, may include what
+# the layer may and the test support of those layers; a test folder tests/<layer>/... may include
+# the same and its own layer's tests (tests/designers/cam: src, designers, tests/support/src,
+# tests/support/designers, tests/designers).
 foreach(layer ${layers})
-  set(allowed_tests/${layer} ${allowed_${layer}} tests/${layer})
+  set(support "")
+  foreach(allowed ${allowed_${layer}})
+    list(APPEND support tests/support/${allowed})
+  endforeach()
+  set(allowed_tests/support/${layer} ${allowed_${layer}} ${support})
+  set(allowed_tests/${layer} ${allowed_${layer}} ${support} tests/${layer})
 endforeach()
-foreach(layer designers jobs ui/cli ui/studio)
-  list(APPEND allowed_tests/${layer} tests/support)
-endforeach()
-set(allowed_tests/support src designers tests/support)
 # Our own include prefixes; anything else (<Eigen/Core>, <imgui.h>, "polarform_version.h") is not
 # a layer.
 set(own_prefixes src designers export jobs ui tests)
@@ -32,8 +35,8 @@ set(own_prefixes src designers export jobs ui tests)
 # The folder of a path relative to ROOT that has rules, longest match first; empty if none.
 function(rule_folder path out)
   set(best "")
-  foreach(folder ${layers} support)
-    foreach(candidate ${folder} tests/${folder})
+  foreach(folder ${layers})
+    foreach(candidate ${folder} tests/${folder} tests/support/${folder})
       string(FIND "${path}" "${candidate}/" at)
       string(LENGTH "${candidate}" n)
       string(LENGTH "${best}" best_n)

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Independent read-back of a DXF file with ezdxf, for the exchange tests (test_exchange).
+"""Independent read-back of a DXF file with ezdxf, for the exchange tests (test_export).
 
 Usage: dxf_inspect.py SAMPLES FILE.dxf [FILE.dxf ...]
 Prints a JSON list with one object per file: the DXF version and $INSUNITS, ezdxf's audit errors

@@ -1,0 +1,222 @@
+// The cam job in memory: for every example the exported curve meets the tolerance under an
+// independent dense sampling (and the job's measured error is the true maximum), the degree is the
+// product degree, the curve is closed; the roller and flat-faced analyses equal textbook closed
+// forms; tolerances below kMinTolerance are refused as bad input.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "jobs/cam/cam_report.h"
+#include "src/error.h"
+#include "tests/support/jobs/cam_job_support.h"
+#include "tests/support/jobs/closed_forms.h"
+
+namespace polarform {
+namespace {
+
+using namespace cam_job_test;
+
+// ψ moved into [start, start + 2π).
+double into_domain(double psi, double start) {
+  while (psi < start) psi += 2 * kPi;
+  while (psi >= start + 2 * kPi) psi -= 2 * kPi;
+  return psi;
+}
+
+// Max |radius − R(ψ)| of a plate profile, or max |z − height(φ)| of a cylindrical track (whose
+// points must also lie on the pitch cylinder), at `count` equally spaced curve parameters.
+double sampled_error(const CamJobResult& r, int count) {
+  const PolarFunction& R = r.conversion.profile_function;
+  double worst = 0;
+  for (int k = 0; k <= count; ++k) {
+    if (r.plate()) {
+      const NurbsCurve2d& c = plate_profile(r).curve;
+      const double u = c.front() + (c.back() - c.front()) * k / count;
+      const Eigen::Vector2d p = c(u);
+      const double psi = into_domain(std::atan2(p.y(), p.x()), R.start);
+      worst = std::max(worst, std::abs(p.norm() - R(psi)));
+    } else {
+      const NurbsCurve3d& c = track_of(r).curve;
+      const double u = c.front() + (c.back() - c.front()) * k / count;
+      const Eigen::Vector3d p = c(u);
+      EXPECT_NEAR(p.head<2>().norm(), r.project().cam.cylinder_radius, 1e-9) << "u = " << u;
+      const double phi = into_domain(std::atan2(p.y(), p.x()), R.start);
+      worst = std::max(worst, std::abs(p.z() + track_of(r).offset - R(phi)));
+    }
+  }
+  return worst;
+}
+
+TEST(CamJob, EveryExampleMeetsItsToleranceUnderIndependentSampling) {
+  for (const std::string& name : kExampleNames) {
+    const CamJobResult& r = example(name).result;
+    const PolarConversion& c = r.conversion.conversion;
+    const double measured = sampled_error(r, 40000);
+    EXPECT_LE(measured, r.project().conversion.tolerance) << name;
+    // The job's own figure is the maximum: dense sampling finds no more, and nearly as much.
+    EXPECT_LE(measured, c.max_radial_error * (1 + 1e-9) + 1e-13) << name;
+    EXPECT_GE(measured, 0.9 * c.max_radial_error) << name;
+    EXPECT_LE(c.max_radial_error, c.tolerance) << name;
+    EXPECT_LE(c.max_normal_error, c.max_radial_error + 1e-13) << name;
+  }
+}
+
+TEST(CamJob, ProfileHasTheProductDegreeAndIsClosed) {
+  for (const std::string& name : kExampleNames) {
+    const CamJobResult& r = example(name).result;
+    const int degree =
+        r.conversion.conversion.function.spline().degree() + 4;  // quartic base: deg F + 4
+    if (r.plate()) {
+      const NurbsCurve2d& c = plate_profile(r).curve;
+      EXPECT_EQ(c.degree(), degree) << name;
+      EXPECT_LT((c(c.front()) - c(c.back())).norm(), 1e-12) << name;
+      ASSERT_TRUE(plate_profile(r).limited) << name;
+      EXPECT_EQ(plate_profile(r).limited->curve.degree(), 3) << name;
+      EXPECT_LE(plate_profile(r).limited->max_radial_error, r.project().conversion.tolerance)
+          << name;
+    } else {
+      const NurbsCurve3d& c = track_of(r).curve;
+      EXPECT_EQ(c.degree(), degree) << name;
+      EXPECT_LT((c(c.front()) - c(c.back())).norm(), 1e-12) << name;
+    }
+  }
+}
+
+TEST(CamJob, RollerAnalysesEqualTheClosedForms) {
+  const CamJobResult& r = example("roller").result;
+  ASSERT_TRUE(std::holds_alternative<PlateCamAnalysis>(r.analysis.cam));
+  const double prime = 50;  // base radius 40 + roller radius 10
+  double pressure = 0, pitch_radius = INFINITY;
+  for (int k = 0; k < 360000; ++k) {
+    const double theta = k * 1e-3;
+    const Motion m = roller_motion(theta);
+    // Radial translating roller: tan α = s' / (Rb + Rr + s).
+    pressure = std::max(pressure, std::abs(std::atan(m.v / (prime + m.s))));
+    const double rho = polar_radius_of_curvature(prime + m.s, m.v, m.a);
+    if (rho > 0) pitch_radius = std::min(pitch_radius, rho);
+  }
+  EXPECT_NEAR(plate_analysis(r).max_pressure_angle.value, pressure, 1e-9);
+  EXPECT_NEAR(plate_analysis(r).min_convex_pitch_radius.value, pitch_radius, 1e-7);
+  // The contour is the pitch curve offset inwards by the roller radius.
+  EXPECT_NEAR(plate_analysis(r).min_convex_contour_radius.value, pitch_radius - 10, 1e-7);
+  EXPECT_TRUE(plate_analysis(r).undercut.empty());
+}
+
+TEST(CamJob, FlatFacedAnalysesEqualTheClosedForms) {
+  const CamJobResult& r = example("flat_faced").result;
+  ASSERT_TRUE(std::holds_alternative<PlateCamAnalysis>(r.analysis.cam));
+  double radius = INFINITY;
+  for (int k = 0; k < 360000; ++k) {
+    double d[3];
+    r.design.program.derivatives(k * 1e-3 * kRadiansPerDegree, 2, d);
+    radius = std::min(radius, 35 + d[0] + d[2]);  // flat face: ρ = Rb + s + s''
+  }
+  EXPECT_NEAR(plate_analysis(r).min_convex_contour_radius.value, radius, 1e-7);
+  EXPECT_EQ(plate_analysis(r).max_pressure_angle.value,
+            0.0);  // a radial flat face pushes along its axis
+  EXPECT_TRUE(plate_analysis(r).undercut.empty());
+}
+
+TEST(CamJob, RefusesToleranceBelowTheFloor) {
+  CamProject p = load_example("roller");
+  p.conversion.tolerance = 1e-12;
+  try {
+    run_cam_job(p);
+    FAIL() << "no error for a 1e-12 mm tolerance";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("1e-12"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("1e-09"), std::string::npos) << e.what();
+  }
+}
+
+// The degree-3 extra cannot follow the harmonic return's acceleration jump down to 1e-8 mm with
+// uniform knots; the exact profile can, so the job warns and goes on.
+TEST(CamJob, UnreachableDegreeLimitedProfileIsAWarningNotAFailure) {
+  EXPECT_TRUE(example("roller").result.conversion.warnings.empty());
+  CamProject p = load_example("offset_roller");
+  p.conversion.tolerance = 1e-8;
+  const CamJobResult r = run_cam_job(p);
+  EXPECT_FALSE(plate_profile(r).limited.has_value());
+  ASSERT_EQ(r.conversion.warnings.size(), 1u);
+  EXPECT_NE(r.conversion.warnings[0].find("degree-3 profile not written"), std::string::npos)
+      << r.conversion.warnings[0];
+  EXPECT_NE(r.conversion.warnings[0].find("1e-08 mm"), std::string::npos)
+      << r.conversion.warnings[0];
+  EXPECT_LE(r.conversion.conversion.max_radial_error, 1e-8);
+}
+
+// The stages the studio runs live — design, analyses, and the conversion with fewer error samples
+// and without the degree-limited extra — give every field of report.json that they compute, bit
+// for bit: the numbers the studio shows are the report's.
+TEST(CamJob, LiveStagesGiveTheReportsFields) {
+  for (const std::string& name : kExampleNames) {
+    SCOPED_TRACE(name);
+    const CamJobResult& r = example(name).result;
+    const CamDesignStage design = design_cam(r.project());
+    const CamAnalysisStage analysis = analyse_cam(design);
+    CamJobOptions live;
+    live.error_samples = 720;
+    live.with_limited = false;
+    const CamConversionStage conversion = convert_cam(design, live);
+    nlohmann::ordered_json shown = cam_report_fields(design, analysis, &conversion);
+    nlohmann::ordered_json written = cam_report_fields(r.design, r.analysis, &r.conversion);
+    written.erase("degree_limited");
+    EXPECT_EQ(shown, written);
+    EXPECT_EQ(conversion.error.angle.size(), 721u);
+    EXPECT_EQ(r.conversion.error.angle.size(), 4001u);
+  }
+}
+
+// The result's alternatives follow the design: a plate cam has a contour analysis and a profile,
+// a cylindrical cam a pitch-radius analysis and a track; the continuity goes up to jerk.
+TEST(CamJob, StagesHoldTheAlternativeOfTheCam) {
+  const CamJobResult& roller = example("roller").result;
+  EXPECT_TRUE(std::holds_alternative<PlateCam>(roller.design.cam));
+  EXPECT_TRUE(std::holds_alternative<PlateCamAnalysis>(roller.analysis.cam));
+  EXPECT_TRUE(std::holds_alternative<PlateProfile>(roller.conversion.profile));
+  const CamJobResult& cylindrical = example("cylindrical").result;
+  EXPECT_TRUE(std::holds_alternative<BarrelCam>(cylindrical.design.cam));
+  EXPECT_TRUE(std::holds_alternative<CylindricalCamAnalysis>(cylindrical.analysis.cam));
+  EXPECT_TRUE(std::holds_alternative<CylindricalTrack>(cylindrical.conversion.profile));
+  // roller.xml: the cycloidal rise starts and ends with a jerk step of 4π²h/β³ (h = 20 mm,
+  // β = π/2) against the dwells; displacement, velocity and acceleration are continuous.
+  ASSERT_EQ(roller.design.continuity.size(), 2u);
+  for (const ContinuityIssue& issue : roller.design.continuity) {
+    EXPECT_EQ(issue.derivative, 3);
+    EXPECT_NEAR(std::abs(issue.jump()), 4 * kPi * kPi * 20 / std::pow(kPi / 2, 3), 1e-9);
+  }
+}
+
+// The motion curves are sampled segment by segment: both one-sided values of a jump appear at the
+// boundary, and the curves cover the revolution in order.
+TEST(CamJob, MotionCurvesShowJumpsAsJumps) {
+  const MotionCurves& m = example("roller").result.analysis.curves;
+  ASSERT_EQ(m.theta.front(), 0.0);
+  EXPECT_NEAR(m.theta.back(), 2 * kPi, 1e-12);
+  EXPECT_TRUE(std::is_sorted(m.theta.begin(), m.theta.end()));
+  std::vector<double> at_rise_start;
+  for (std::size_t i = 0; i < m.theta.size(); ++i)
+    if (std::abs(m.theta[i] - kPi / 2) < 1e-12) at_rise_start.push_back(m.j[i]);
+  ASSERT_EQ(at_rise_start.size(), 2u);
+  EXPECT_EQ(at_rise_start[0], 0.0);  // the dwell's end
+  EXPECT_NEAR(at_rise_start[1], 4 * kPi * kPi * 20 / std::pow(kPi / 2, 3), 1e-9);
+}
+
+// The measured error curve is the converter's measure along the profile: sorted by polar angle
+// over one turn, never above the conversion's maximum, and reaching nearly all of it.
+TEST(CamJob, ErrorCurveIsTheMeasuredErrorAlongTheProfile) {
+  for (const std::string& name : kExampleNames) {
+    SCOPED_TRACE(name);
+    const CamConversionStage& c = example(name).result.conversion;
+    EXPECT_TRUE(std::is_sorted(c.error.angle.begin(), c.error.angle.end()));
+    EXPECT_GE(c.error.angle.front(), 0.0);
+    EXPECT_LT(c.error.angle.back(), 2 * kPi);
+    const double worst = *std::max_element(c.error.error.begin(), c.error.error.end());
+    EXPECT_LE(worst, c.conversion.max_radial_error * (1 + 1e-9));
+    EXPECT_GE(worst, 0.8 * c.conversion.max_radial_error);
+  }
+}
+
+}  // namespace
+}  // namespace polarform

@@ -1,0 +1,125 @@
+// The fit job on synthetic scans with known answers: the method chosen, the exact degrees of true
+// circles, spheres, cylinders and surfaces of revolution with round-off errors, and a noisy
+// rotational freeform shape fitted to the noise level.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+#include <random>
+
+#include "jobs/fit/fit_job.h"
+#include "src/error.h"
+#include "tests/support/designers/synthetic_scans.h"
+
+namespace polarform {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+TEST(FitJob, ExactSphereGivesDegreeTwoTwoAtRoundOff) {
+  const Eigen::Vector3d centre(3, -4, 12);
+  const FitJobResult r = run_fit_job(sphere_cloud(2000, 25.0, centre, 7), "sphere");
+  EXPECT_EQ(r.method, "spherical");
+  const FitReport& rep = r.report();
+  EXPECT_EQ(rep.nurbs_degree_u, 2);
+  EXPECT_EQ(rep.nurbs_degree_v, 2);
+  EXPECT_LT(rep.error.max, 1e-9);
+  EXPECT_LT((std::get<RotationalFit>(r.fit).frame().frame.origin - centre).norm(), 1e-9);
+  RecordProperty("max_error_mm", std::to_string(rep.error.max));
+}
+
+TEST(FitJob, ExactCylinderGivesDegreeOneTwo) {
+  const FitJobResult r = run_fit_job(cone_cloud(2000, 18.0, 0.0, 50.0, 8), "cylinder");
+  EXPECT_EQ(r.method, "cylindrical");
+  EXPECT_EQ(r.report().nurbs_degree_u, 1);
+  EXPECT_EQ(r.report().nurbs_degree_v, 2);
+  EXPECT_LT(r.report().error.max, 1e-9);
+}
+
+TEST(FitJob, ConeAsSurfaceOfRevolutionGivesDegreeThreeTwo) {
+  FitJobOptions o;
+  o.method = FitJobMethod::cylindrical;
+  const FitJobResult r = run_fit_job(cone_cloud(2000, 10.0, 0.25, 40.0, 9), "cone", o);
+  EXPECT_EQ(r.report().nurbs_degree_u, 3);
+  EXPECT_EQ(r.report().nurbs_degree_v, 2);
+  EXPECT_LT(r.report().error.max, 1e-9);
+}
+
+TEST(FitJob, PlanarCircleIsAPolarCurveOfDegreeTwo) {
+  Eigen::Matrix3Xd p(3, 400);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> T(0, 2 * kPi);
+  for (Eigen::Index k = 0; k < p.cols(); ++k) {
+    const double t = T(rng);
+    p.col(k) = Eigen::Vector3d(5 + 20 * std::cos(t), -2 + 20 * std::sin(t), 7.5);
+  }
+  const FitJobResult r = run_fit_job(p, "circle");
+  EXPECT_EQ(r.method, "polar");
+  ASSERT_TRUE(r.profile());
+  const NurbsCurve3d& curve = std::get<ProfileFit>(r.fit).curve;
+  EXPECT_EQ(curve.degree(), 2);
+  EXPECT_LT(r.report().error.max, 1e-9);
+  EXPECT_NEAR(curve.point(curve.front()).z(), 7.5, 1e-12);
+}
+
+TEST(FitJob, NoisyVaseIsFittedToTheNoiseLevel) {
+  const double sigma = 0.02;
+  FitJobOptions o;
+  o.ctrl = std::pair{16, 16};
+  const FitJobResult r = run_fit_job(vase_cloud(8000, sigma, 11), "vase", o);
+  EXPECT_EQ(r.method, "cylindrical");
+  const double rms = r.report().error.rms;
+  EXPECT_NEAR(rms, sigma, 0.1 * sigma);
+  RecordProperty("rms_over_sigma", std::to_string(rms / sigma));
+}
+
+TEST(FitJob, BundledSphereLikeScanIsFittedToItsStatedNoise) {
+  // examples/scans/sphere_like.xyz states N(0, 0.02²) mm per coordinate; three lobes in θ need
+  // 24 control values around.
+  FitJobOptions o;
+  o.ctrl = std::pair{12, 24};
+  const FitJobResult r =
+      run_fit_job(std::filesystem::path(POLARFORM_SOURCE_DIR) / "examples/scans/sphere_like.xyz", o);
+  EXPECT_EQ(r.method, "spherical");
+  EXPECT_NEAR(r.report().error.rms, 0.02, 0.002);
+  RecordProperty("rms_mm", std::to_string(r.report().error.rms));
+}
+
+TEST(FitJob, NonPlanarCloudRefusesPolarMethod) {
+  FitJobOptions o;
+  o.method = FitJobMethod::polar;
+  try {
+    run_fit_job(vase_cloud(500, 0.0, 1), "vase", o);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("planar"), std::string::npos) << e.what();
+  }
+}
+
+TEST(FitJob, FoldedProfileNamesTheAngleRanges) {
+  // The bundled cam scan with its bore: rays from the centre cross the contour and the bore.
+  try {
+    run_fit_job(std::filesystem::path(POLARFORM_SOURCE_DIR) / "examples/scans/cam_profile.xyz");
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("not single-valued"), std::string::npos) << m;
+    EXPECT_NE(m.find("theta (deg) in ["), std::string::npos) << m;
+  }
+}
+
+TEST(FitJob, BadOptionsAreInputErrors) {
+  FitJobOptions o;
+  o.ctrl = std::pair{10, 10};
+  o.tolerance = 0.1;
+  EXPECT_THROW(run_fit_job(sphere_cloud(200, 5.0, Eigen::Vector3d::Zero(), 1), "s", o), InputError);
+  FitJobOptions cap;
+  cap.pole = PoleTreatment::cap;
+  cap.closure = Closure::open;
+  EXPECT_THROW(run_fit_job(sphere_cloud(200, 5.0, Eigen::Vector3d::Zero(), 1), "s", cap),
+               InputError);
+}
+
+}  // namespace
+}  // namespace polarform

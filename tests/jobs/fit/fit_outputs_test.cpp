@@ -1,0 +1,129 @@
+// The fit job's files: everything listed is written, report.json carries the documented fields
+// with sane values, deviation.ply holds one point per input point, and a broken scan stops the job
+// with an error naming its line before anything is written.
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+
+#include "jobs/fit/fit_outputs.h"
+#include "src/error.h"
+#include "src/io/point_cloud.h"
+#include "tests/support/designers/synthetic_scans.h"
+#include "tests/support/jobs/job_test_support.h"
+
+namespace polarform {
+namespace {
+
+using test::example;
+using test::files_in;
+using test::read_json;
+using test::scratch_dir;
+using test::write_text;
+
+TEST(FitOutputs, SphereLikeExampleWritesEveryFileAndASaneReport) {
+  const auto dir = scratch_dir() / "out";
+  const FitJobResult r = run_fit_job(example("scans/sphere_like.xyz"));
+  const std::vector<std::string> files = write_fit_outputs(r, dir);
+  const std::set<std::string> expected = {"deviation.ply", "preview.svg", "report.html",
+                                          "report.json",   "surface.igs", "surface.stp",
+                                          "surface.x3d"};
+  EXPECT_EQ(std::set<std::string>(files.begin(), files.end()), expected);
+  EXPECT_EQ(files_in(dir), expected);
+
+  const nlohmann::json j = read_json(dir / "report.json");
+  EXPECT_EQ(j["command"], "fit");
+  EXPECT_EQ(j["method"], "spherical");
+  EXPECT_FALSE(j["reason"].get<std::string>().empty());
+  EXPECT_EQ(j["input"]["points"], 3000);
+  EXPECT_EQ(j["quadric"]["type"], "real ellipsoid");
+  EXPECT_EQ(j["quadric"]["coefficients"].size(), 10u);
+  // The example was moved by (10, -5, 20): the frame origin lands there within 0.2 mm.
+  const auto& o = j["frame"]["origin"];
+  EXPECT_NEAR(o[0].get<double>(), 10.0, 0.2);
+  EXPECT_NEAR(o[1].get<double>(), -5.0, 0.2);
+  EXPECT_NEAR(o[2].get<double>(), 20.0, 0.2);
+  EXPECT_EQ(j["degrees"]["F"], nlohmann::json::array({3, 3}));
+  EXPECT_EQ(j["degrees"]["nurbs"], nlohmann::json::array({5, 5}));
+  EXPECT_EQ(j["control_net"]["F"], nlohmann::json::array({12, 12}));
+  const auto& e = j["error_mm"];
+  EXPECT_EQ(e["count"], 3000);
+  // Noise 0.02 mm per coordinate: the error is of that order and its statistics are ordered.
+  EXPECT_GT(e["rms"].get<double>(), 0.015);
+  EXPECT_LT(e["rms"].get<double>(), 0.06);
+  EXPECT_LE(e["p95"].get<double>(), e["p99"].get<double>());
+  EXPECT_LE(e["p99"].get<double>(), e["max"].get<double>());
+  EXPECT_LT(j["seam"]["gap_mm"].get<double>(), 1e-12);
+  EXPECT_GT(j["timings_s"]["total"].get<double>(), 0.0);
+  EXPECT_GE(j["timings_s"]["total"].get<double>(), j["timings_s"]["read"].get<double>());
+
+  const PointCloud deviation = read_point_cloud(dir / "deviation.ply");
+  EXPECT_EQ(deviation.points.cols(), 3000);
+  EXPECT_TRUE(deviation.points.isApprox(r.points, 0.0));
+}
+
+TEST(FitOutputs, PolarProfileWritesCurveFilesWithDxf) {
+  const auto dir = scratch_dir();
+  std::string text = "x,y,z\n";
+  for (int k = 0; k < 360; ++k) {
+    const double t = k * 3.14159265358979 / 180;
+    text += std::to_string(30 * std::cos(t) * (1 + 0.05 * std::cos(3 * t))) + "," +
+            std::to_string(30 * std::sin(t) * (1 + 0.05 * std::cos(3 * t))) + ",0\n";
+  }
+  FitJobOptions o;
+  o.tolerance = 1e-4;
+  const FitJobResult r = run_fit_job(write_text(dir / "profile.csv", text), o);
+  EXPECT_EQ(r.method, "polar");
+  const std::vector<std::string> files = write_fit_outputs(r, dir / "out");
+  EXPECT_EQ(files_in(dir / "out"),
+            (std::set<std::string>{"curve.dxf", "curve.igs", "curve.stp", "curve.x3d",
+                                   "deviation.ply", "preview.svg", "report.html", "report.json"}));
+  const nlohmann::json j = read_json(dir / "out/report.json");
+  EXPECT_EQ(j["method"], "polar");
+  EXPECT_TRUE(j["closed"].get<bool>());
+  EXPECT_EQ(j["degrees"]["nurbs"][0], 5);               // cubic F times the RQB base circle
+  EXPECT_LE(j["error_mm"]["max"].get<double>(), 1e-4);  // the tolerance, measured
+  EXPECT_GT(j["refinements"].get<int>(), 0);
+}
+
+TEST(FitOutputs, NanLineIsNamedAndNothingIsWritten) {
+  const auto dir = scratch_dir();
+  const Eigen::Matrix3Xd sphere = sphere_cloud(300, 20.0, Eigen::Vector3d(1, 2, 3), 5);
+  std::string text = "# a sphere with one bad record\n";
+  for (Eigen::Index k = 0; k < sphere.cols(); ++k) {
+    if (k == 4) text += "4 nan 6\n";  // line 6
+    text += std::to_string(sphere(0, k)) + " " + std::to_string(sphere(1, k)) + " " +
+            std::to_string(sphere(2, k)) + "\n";
+  }
+  const auto scan = write_text(dir / "broken.xyz", text);
+  const auto out = dir / "out";
+  std::filesystem::create_directories(out);
+  write_text(out / "keep.txt", "old");
+  try {
+    write_fit_outputs(run_fit_job(scan), out);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("broken.xyz"), std::string::npos) << m;
+    EXPECT_NE(m.find("line 6"), std::string::npos) << m;
+    EXPECT_NE(m.find("NaN"), std::string::npos) << m;
+  }
+  EXPECT_EQ(files_in(out), std::set<std::string>{"keep.txt"});
+  // With skip_bad the record is dropped, counted and the rest fitted.
+  FitJobOptions skip;
+  skip.skip_bad = true;
+  const FitJobResult r = run_fit_job(scan, skip);
+  EXPECT_EQ(r.dropped, 1u);
+  EXPECT_EQ(r.points.cols(), 300);
+  EXPECT_EQ(r.method, "spherical");
+  EXPECT_LT(r.report().error.max, 1e-5);  // 6-decimal coordinates
+  EXPECT_EQ(fit_report_json(r, {})["input"]["dropped"], 1);
+}
+
+TEST(FitOutputs, TooFewPointsIsAnInputError) {
+  const auto dir = scratch_dir();
+  EXPECT_THROW(run_fit_job(write_text(dir / "two.xyz", "0 0 0\n1 1 1\n")), InputError);
+}
+
+}  // namespace
+}  // namespace polarform

@@ -1,0 +1,204 @@
+// Cam project files: the examples load cleanly, round-trip exactly and are the designs the
+// designer tests build in code; every kind of broken file gives its own error naming file, line
+// and field; random corruption never escapes as anything but InputError.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <random>
+#include <sstream>
+
+#include "jobs/project/cam_project.h"
+#include "src/error.h"
+#include "tests/support/designers/example_cams.h"
+
+namespace polarform {
+namespace {
+
+namespace fs = std::filesystem;
+const fs::path kExamples = fs::path(POLARFORM_SOURCE_DIR) / "examples" / "cams";
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string error_of(const std::string& xml) {
+  std::vector<std::string> warnings;
+  try {
+    parse_cam_project(xml, "cam.xml", warnings);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+std::string cam(const std::string& attributes, const std::string& segments) {
+  return "<polarform version=\"1\">\n<cam " + attributes + ">\n" + segments + "</cam>\n</polarform>\n";
+}
+
+const std::string kPlate = "follower=\"roller\" base-radius=\"40\" roller-radius=\"10\"";
+const std::string kSegments =
+    "<segment kind=\"rise\" law=\"cycloidal\" lift=\"20\" to=\"180\"/>\n"
+    "<segment kind=\"return\" law=\"4-5-6-7\" to=\"360\"/>\n";
+
+TEST(CamProject, ExamplesLoadWithoutWarningsAndRoundTripExactly) {
+  int count = 0;
+  for (const auto& entry : fs::directory_iterator(kExamples)) {
+    std::vector<std::string> warnings;
+    const CamProject p = read_cam_project(entry.path(), warnings);
+    EXPECT_TRUE(warnings.empty()) << entry.path() << ": " << (warnings.empty() ? "" : warnings[0]);
+    std::vector<std::string> again_warnings;
+    const CamProject again = parse_cam_project(cam_project_xml(p), "saved.xml", again_warnings);
+    EXPECT_TRUE(again == p) << entry.path();
+    EXPECT_TRUE(again_warnings.empty());
+    EXPECT_EQ(cam_project_xml(again), cam_project_xml(p));
+    ++count;
+  }
+  EXPECT_EQ(count, 5);
+}
+
+// The tests of designers/ build the examples in code: every file reads to exactly that design
+// (segment starts, given in a file as the previous end in degrees, to rounding).
+TEST(CamProject, ExamplesAreTheDesignsTheDesignerTestsBuild) {
+  for (const std::string& name : test::example_cam_names()) {
+    SCOPED_TRACE(name);
+    std::vector<std::string> warnings;
+    CamDesign read = read_cam_project(kExamples / (name + ".xml"), warnings).cam;
+    const CamDesign built = test::example_cam_design(name);
+    ASSERT_EQ(read.segments.size(), built.segments.size());
+    for (std::size_t k = 0; k < read.segments.size(); ++k) {
+      EXPECT_NEAR(read.segments[k].start, built.segments[k].start, 1e-14) << "segment " << k;
+      read.segments[k].start = built.segments[k].start;
+    }
+    EXPECT_TRUE(read == built);
+  }
+}
+
+TEST(CamProject, ReadsTheRollerExample) {
+  std::vector<std::string> warnings;
+  const CamProject p = read_cam_project(kExamples / "roller.xml", warnings);
+  EXPECT_EQ(p.cam.type, CamType::Plate);
+  EXPECT_EQ(p.cam.follower.kind, FollowerKind::Roller);
+  EXPECT_EQ(p.cam.follower.roller_radius, 10.0);
+  EXPECT_EQ(p.cam.base_radius, 40.0);
+  EXPECT_EQ(p.cam.rpm, 300.0);
+  ASSERT_EQ(p.cam.segments.size(), 4u);
+  EXPECT_EQ(p.cam.segments[1].law, MotionLaw::Cycloidal);
+  EXPECT_DOUBLE_EQ(p.cam.segments[1].start, std::numbers::pi / 2);
+  EXPECT_EQ(p.cam.segments[3].lift, 20.0);  // a return's lift defaults to the level reached
+  EXPECT_EQ(p.cam.segments[3].law, MotionLaw::Polynomial4567);
+  EXPECT_EQ(p.conversion.tolerance, 0.001);
+  EXPECT_EQ(p.conversion.base, ArcKind::quartic);
+  EXPECT_FALSE(p.max_degree);
+}
+
+TEST(CamProject, PolynomialConstraintsSetTheirOrder) {
+  std::vector<std::string> warnings;
+  const CamProject p = read_cam_project(kExamples / "polynomial.xml", warnings);
+  EXPECT_EQ(p.cam.segments[1].law, MotionLaw::Polynomial);
+  EXPECT_EQ(p.cam.segments[1].constrained_order, 3);
+  EXPECT_EQ(p.cam.segments[3].constrained_order, 2);
+}
+
+TEST(CamProject, BrokenFilesGiveSpecificErrors) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"<polarform version=\"1\"><cam", "cam.xml:1: malformed XML: cannot parse an element"},
+      {cam(kPlate, "<segment kind=\"rise\" law=\"cycloidal\" lift=\"twenty\" to=\"180\"/>\n"),
+       "cam.xml:3: <segment> attribute 'lift': expected a finite number, got 'twenty'"},
+      {cam("follower=\"roller\" base-radius=\"-40\" roller-radius=\"10\"", kSegments),
+       "cam.xml:2: <cam> attribute 'base-radius': expected a number > 0, got '-40'"},
+      {cam(kPlate, "<segment kind=\"rise\" law=\"parabolic\" lift=\"20\" to=\"180\"/>\n"),
+       "cam.xml:3: <segment> attribute 'law': expected a motion law (unknown motion law "
+       "'parabolic'; expected one of: harmonic, cycloidal, modified-trapezoid, modified-sine, "
+       "3-4-5, 4-5-6-7, polynomial, bspline), got 'parabolic'"},
+      {cam(kPlate, "<segment kind=\"rise\" law=\"cycloidal\" lift=\"20\" to=\"180\"/>\n"
+                   "<segment kind=\"return\" law=\"cycloidal\" to=\"300\"/>\n"),
+       "cam.xml:2: <cam>: the segments end at 300°; they must cover 0° to 360°"},
+      {cam(kPlate, "<segment kind=\"rise\" law=\"cycloidal\" lift=\"20\" to=\"180\"/>\n"
+                   "<segment kind=\"return\" law=\"cycloidal\" from=\"170\" to=\"360\"/>\n"),
+       "cam.xml:4: <segment>: segment starts at 170° but the previous one ends at 180° (an "
+       "overlap)"},
+      {cam(kPlate, "<segment kind=\"rise\" law=\"cycloidal\" lift=\"20\" to=\"180\"/>\n"
+                   "<segment kind=\"return\" law=\"cycloidal\" from=\"190\" to=\"360\"/>\n"),
+       "cam.xml:4: <segment>: segment starts at 190° but the previous one ends at 180° (a gap)"},
+      {cam(kPlate, "<segment kind=\"rise\" law=\"cycloidal\" lift=\"20\" to=\"180\"/>\n"
+                   "<segment kind=\"dwell\" to=\"120\"/>\n"),
+       "cam.xml:4: <segment> attribute 'to': expected an angle after the segment start 180°, got "
+       "'120'"},
+      {cam(kPlate, "<segment kind=\"lift\" to=\"360\"/>\n"),
+       "cam.xml:3: <segment> attribute 'kind': expected one of dwell|rise|return, got 'lift'"},
+      {cam(kPlate, ""), "cam.xml:2: <cam>: no <segment> elements"},
+      {cam("follower=\"roller\" base-radius=\"40\"", kSegments),
+       "cam.xml:2: <cam> attribute 'roller-radius': expected a number (attribute is missing)"},
+      {cam("type=\"cylindrical\" follower=\"flat-faced\" cylinder-radius=\"60\"", kSegments),
+       "cam.xml:2: <cam> attribute 'follower': expected a roller follower for a cylindrical cam, "
+       "got 'flat-faced'"},
+      {"<cam/>", "cam.xml:1: <cam>: expected the root element <polarform>"},
+      {"<polarform version=\"2\"/>",
+       "cam.xml:1: <polarform> attribute 'version': expected 1 (the only project version this "
+       "polarform reads), got '2'"},
+      {cam(kPlate, "<segment kind=\"return\" law=\"cycloidal\" to=\"360\"/>\n"),
+       "cam.xml:3: <segment> attribute 'lift': expected a lift > 0 mm (the follower is already at "
+       "the base circle)"},
+  };
+  for (const auto& [xml, expected] : cases) EXPECT_EQ(error_of(xml), expected) << xml;
+}
+
+TEST(CamProject, UnknownFieldsWarnWithTheirLine) {
+  std::vector<std::string> warnings;
+  parse_cam_project(cam(kPlate + " colour=\"red\"", kSegments + "<note/>\n"), "cam.xml", warnings);
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_EQ(warnings[0], "cam.xml:2: unknown attribute 'colour' on <cam> ignored");
+  EXPECT_EQ(warnings[1], "cam.xml:5: unknown element <note> in <cam> ignored");
+}
+
+// Random corruption of valid projects: every outcome is a project or an InputError.
+TEST(CamProject, FuzzedFilesNeverEscapeAsAnythingButInputError) {
+  std::vector<std::string> corpus;
+  for (const auto& entry : fs::directory_iterator(kExamples)) corpus.push_back(slurp(entry.path()));
+  std::mt19937 rng(7);
+  const std::string alphabet = "<>/=\" 0123456789.-eabcdefxyz\n";
+  int accepted = 0, rejected = 0;
+  for (int k = 0; k < 3000; ++k) {
+    std::string text = corpus[k % corpus.size()];
+    const int edits = 1 + static_cast<int>(rng() % 4);
+    for (int e = 0; e < edits && !text.empty(); ++e) {
+      const std::size_t at = rng() % text.size();
+      switch (rng() % 3) {
+        case 0: text[at] = alphabet[rng() % alphabet.size()]; break;
+        case 1: text.erase(at, 1 + rng() % 8); break;
+        default: text.resize(at); break;
+      }
+    }
+    std::vector<std::string> warnings;
+    try {
+      parse_cam_project(text, "fuzz.xml", warnings);
+      ++accepted;
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()).rfind("fuzz.xml", 0), 0u) << e.what();
+      ++rejected;
+    }
+  }
+  EXPECT_GT(accepted, 100);
+  EXPECT_GT(rejected, 1000);
+}
+
+TEST(CamProject, SavingIsAtomic) {
+  const fs::path dir = fs::temp_directory_path() / "polarform_cam_project_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::vector<std::string> warnings;
+  const CamProject p = read_cam_project(kExamples / "roller.xml", warnings);
+  write_cam_project(p, dir / "a.xml");
+  EXPECT_TRUE(read_cam_project(dir / "a.xml", warnings) == p);
+  EXPECT_THROW(write_cam_project(p, dir / "missing" / "b.xml"), InputError);
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator{}), 1);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace polarform

@@ -1,0 +1,111 @@
+// The scan-cam job on the bundled example scan of examples/cams/roller.xml (made by
+// scripts/make-example-scans.py: turned 30°, centre (12.5, -7.25), σ = 5 µm along the normal):
+// the phase, the centre and the motion are recovered, the report carries them, and bad option
+// combinations are refused before anything is read or written.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <set>
+#include <string>
+
+#include "jobs/scan_cam/scan_cam_outputs.h"
+#include "src/error.h"
+#include "src/units.h"
+#include "tests/support/jobs/job_test_support.h"
+
+namespace polarform {
+namespace {
+
+using test::example;
+using test::files_in;
+using test::read_json;
+using test::scratch_dir;
+
+TEST(ScanCamJob, BundledRollerScanAgainstItsNominal) {
+  ScanCamJobOptions o;
+  o.nominal = example("cams/roller.xml");
+  o.tolerance = 0.01;
+  const ScanCamJobResult r = run_scan_cam_job(example("scans/cam_profile.xyz"), o);
+  ASSERT_TRUE(r.comparison);
+  EXPECT_EQ(r.follower_source, "nominal design");
+  EXPECT_TRUE(r.within_tolerance);
+  const auto dir = scratch_dir();
+  write_scan_cam_outputs(r, dir);
+  EXPECT_EQ(files_in(dir),
+            (std::set<std::string>{"deviation.csv", "deviation.svg", "profile.dxf", "profile.igs",
+                                   "profile.stp", "profile.svg", "profile.x3d", "report.html",
+                                   "report.json", "svaj.csv", "svaj.svg", "svaj_difference.svg"}));
+  const nlohmann::json j = read_json(dir / "report.json");
+  EXPECT_EQ(j["command"], "scan-cam");
+  EXPECT_EQ(j["scan"]["kind"], "2d");
+  EXPECT_EQ(j["scan"]["contour_points"], 3600);
+  EXPECT_NEAR(j["bore"]["diameter_mm"].get<double>(), 16.0, 0.002);
+  EXPECT_NEAR(j["cam_frame"]["origin"][0].get<double>(), 12.5, 0.002);
+  EXPECT_NEAR(j["cam_frame"]["origin"][1].get<double>(), -7.25, 0.002);
+  EXPECT_NEAR(j["alignment"]["phase_deg"].get<double>(), 30.0, 0.01);
+  EXPECT_FALSE(j["alignment"]["mirrored"].get<bool>());
+  EXPECT_NEAR(j["displacement"]["noise_mm"].get<double>(), 0.005, 0.0005);
+  EXPECT_NEAR(j["displacement"]["base_radius_mm"].get<double>(), 40.0, 0.005);
+  EXPECT_NEAR(j["motion"]["lift_mm"].get<double>(), 20.0, 0.005);
+  EXPECT_LT(j["nominal"]["profile_normal_deviation_mm"]["rms"].get<double>(), 0.002);
+  EXPECT_LT(j["nominal"]["svaj_difference"]["s_mm"]["max"].get<double>(), 0.005);
+  EXPECT_EQ(j["tolerance"]["within"], true);
+  EXPECT_EQ(j["profile"]["degree"], 5);
+}
+
+TEST(ScanCamJob, BundledThreeDimensionalPlateScanFindsItsFrame) {
+  // cam_plate.xyz: the design turned 35° about (1, -2, 0.5) and moved by (120, 40, -15), σ 10 µm.
+  ScanCamJobOptions o;
+  o.nominal = example("cams/roller.xml");
+  const ScanCamJobResult r = run_scan_cam_job(example("scans/cam_plate.xyz"), o);
+  const ScannedCam& s = r.scan;
+  EXPECT_TRUE(s.profile.three_d);
+  EXPECT_NEAR(std::abs(s.profile.thickness), 10.0, 0.005);
+  const Eigen::Matrix3d truth =
+      Eigen::AngleAxisd(35.0 * kRadiansPerDegree, Eigen::Vector3d(1, -2, 0.5).normalized())
+          .toRotationMatrix();
+  EXPECT_LT((s.cam_frame.origin - Eigen::Vector3d(120, 40, -15)).norm(), 0.005);
+  EXPECT_GT(s.cam_frame.axes.col(2).dot(truth.col(2)), std::cos(1e-4));  // axis within 0.1 mrad
+  EXPECT_GT(s.cam_frame.axes.col(0).dot(truth.col(0)), std::cos(1e-3));  // phase within 1 mrad
+  EXPECT_LT(r.comparison->normal_stats.rms, 0.005);
+  EXPECT_LT(r.comparison->svaj_stats[0].max, 0.012);
+}
+
+TEST(ScanCamJob, WithoutNominalTheFollowerComesFromTheOptions) {
+  ScanCamJobOptions o;
+  o.follower = Follower{FollowerKind::Roller, 0.0, 10.0};
+  const ScanCamJobResult r = run_scan_cam_job(example("scans/cam_profile.xyz"), o);
+  EXPECT_FALSE(r.comparison);
+  EXPECT_NEAR(r.scan.base_radius, 40.0, 0.005);
+  double lo = 1e9, hi = -1e9;
+  for (int i = 0; i < 720; ++i) {
+    double s;
+    r.scan.displacement_derivatives(i * 3.14159265358979 / 360, 0, &s);
+    lo = std::min(lo, s), hi = std::max(hi, s);
+  }
+  EXPECT_NEAR(lo, 0.0, 1e-5);  // measured from its own lowest level
+  EXPECT_NEAR(hi, 20.0, 0.005);
+}
+
+TEST(ScanCamJob, BadOptionCombinationsAreRefused) {
+  const std::string scan = example("scans/cam_profile.xyz");
+  ScanCamJobOptions tol_only;
+  tol_only.tolerance = 0.01;
+  EXPECT_THROW(run_scan_cam_job(scan, tol_only), InputError);
+  ScanCamJobOptions both;
+  both.nominal = example("cams/roller.xml");
+  both.follower = Follower{FollowerKind::KnifeEdge, 0.0, 0.0};
+  EXPECT_THROW(run_scan_cam_job(scan, both), InputError);
+  ScanCamJobOptions cylindrical;
+  cylindrical.nominal = example("cams/cylindrical.xml");
+  EXPECT_THROW(run_scan_cam_job(scan, cylindrical), InputError);
+  ScanCamJobOptions roller;
+  roller.follower = Follower{FollowerKind::Roller, 0.0, 0.0};
+  EXPECT_THROW(run_scan_cam_job(scan, roller), InputError);
+}
+
+}  // namespace
+}  // namespace polarform

@@ -1,0 +1,29 @@
+// The study job on examples/cams/roller.xml over 1e-2:1e-4 mm (two steps per decade), computed and
+// written once per test process: what the study-job tests check and what `polarform study` must
+// reproduce.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "jobs/study/study_job.h"
+#include "tests/support/jobs/cam_job_support.h"
+
+namespace polarform::cam_job_test {
+
+struct StudyRun {
+  StudyRun() : dir("study") {
+    result = run_study_job(load_example("roller"), log_tolerances(1e-2, 1e-4, 2));
+    files = write_study_outputs(result, "roller", dir.path());
+  }
+  StudyJobResult result;
+  ScratchDir dir;
+  std::vector<std::string> files;
+};
+
+inline const StudyRun& study() {
+  static const StudyRun run;
+  return run;
+}
+
+}  // namespace polarform::cam_job_test

@@ -1,0 +1,117 @@
+// The polarform CLI on good input: --help, --version and each command's --help exit 0; `cam` on
+// an example exits 0 and writes the job's files; --tol, --base and --max-degree override the
+// project and the report shows it; unknown project fields warn (naming line and name) but run.
+#include <gtest/gtest.h>
+
+#include <regex>
+
+#include "tests/support/jobs/cam_job_support.h"
+#include "tests/ui/cli/cli_run.h"
+
+namespace polarform {
+namespace {
+
+using namespace cam_job_test;
+
+TEST(Cli, HelpAndVersionExitZero) {
+  const ScratchDir scratch("cli_help");
+  const CliRun help = run_cli({"--help"}, scratch);
+  EXPECT_EQ(help.status, 0);
+  EXPECT_NE(help.out.find("cam"), std::string::npos);
+  EXPECT_NE(help.out.find("study"), std::string::npos);
+  const CliRun cam = run_cli({"cam", "--help"}, scratch);
+  EXPECT_EQ(cam.status, 0);
+  for (const char* option : {"--out", "--tol", "--base", "--max-degree", "--solid", "--bore"})
+    EXPECT_NE(cam.out.find(option), std::string::npos) << option;
+  const CliRun study = run_cli({"study", "--help"}, scratch);
+  EXPECT_EQ(study.status, 0);
+  EXPECT_NE(study.out.find("--steps-per-decade"), std::string::npos);
+  const CliRun version = run_cli({"--version"}, scratch);
+  EXPECT_EQ(version.status, 0);
+  EXPECT_TRUE(std::regex_match(version.out, std::regex(R"(polarform \d+\.\d+\.\d+\n)")))
+      << version.out;
+  EXPECT_EQ(run_cli({}, scratch).status, 2);  // a command is required
+}
+
+TEST(Cli, CamOnTheRollerExampleWritesTheJobsFiles) {
+  const ScratchDir scratch("cli_cam");
+  const CliRun run = run_cli(
+      {"cam", (kExamples / "roller.xml").string(), "--out", (scratch / "out").string()}, scratch);
+  ASSERT_EQ(run.status, 0) << run.err;
+  // The cycloidal rise starts and ends with a jerk step (4π²h/β³ = 203.718 mm/rad³): the CLI
+  // names every continuity issue the report lists, up to jerk.
+  const std::string jerk_steps =
+      "polarform: motion: jerk jumps by 203.718 mm/rad³ (0 -> 203.718) at 90° between "
+      "'segment 1' and 'segment 2'\n"
+      "polarform: motion: jerk jumps by -203.718 mm/rad³ (203.718 -> 0) at 180° between "
+      "'segment 2' and 'segment 3'\n";
+  EXPECT_EQ(run.err, jerk_steps);
+  const json cli = read_json(scratch / "out" / "report.json");
+  const json job = read_json(example("roller").dir / "report.json");
+  const std::string summary = std::to_string(job["arcs"].get<int>()) + " arcs, degree 9, " +
+                              std::to_string(job["control_points"].get<int>()) + " control points";
+  EXPECT_NE(run.out.find(summary), std::string::npos) << run.out;
+  for (const char* field : {"arcs", "degree", "control_points", "knot_count", "tolerance_mm",
+                            "max_radial_error_mm", "max_normal_error_mm", "max_pressure_angle_deg",
+                            "min_radius_of_curvature_mm", "undercut", "arc_list", "files"})
+    EXPECT_EQ(cli[field], job[field]) << field;
+  EXPECT_EQ(snapshot(scratch / "out").size(), 12u);
+  // --quiet prints nothing but the warnings and motion notes.
+  const CliRun quiet = run_cli(
+      {"cam", (kExamples / "roller.xml").string(), "--out", (scratch / "quiet").string(), "-q"},
+      scratch);
+  EXPECT_EQ(quiet.status, 0);
+  EXPECT_EQ(quiet.out + quiet.err, jerk_steps);
+}
+
+TEST(Cli, OptionsOverrideTheProject) {
+  const ScratchDir scratch("cli_options");
+  const std::string design = (kExamples / "roller.xml").string();
+  ASSERT_EQ(run_cli({"cam", design, "--out", (scratch / "loose").string(), "--tol", "0.01", "-q"},
+                    scratch)
+                .status,
+            0);
+  const json loose = read_json(scratch / "loose" / "report.json");
+  EXPECT_EQ(loose["tolerance_mm"].get<double>(), 0.01);
+  EXPECT_LE(loose["max_radial_error_mm"].get<double>(), 0.01);
+  EXPECT_GT(loose["max_radial_error_mm"].get<double>(), 1e-3);  // it used the looser budget
+  const json exact = read_json(example("roller").dir / "report.json");
+  EXPECT_LT(loose["control_points"].get<int>(), exact["control_points"].get<int>());
+
+  ASSERT_EQ(
+      run_cli({"cam", design, "--out", (scratch / "rqb").string(), "--base", "rqb", "-q"}, scratch)
+          .status,
+      0);
+  const json rqb = read_json(scratch / "rqb" / "report.json");
+  EXPECT_EQ(rqb["base"], "rqb");
+  EXPECT_EQ(rqb["degree"].get<int>(), exact["degree"].get<int>() - 2);  // deg F + 2
+  EXPECT_LE(rqb["max_radial_error_mm"].get<double>(), 1e-3);
+
+  ASSERT_EQ(
+      run_cli({"cam", design, "--out", (scratch / "capped").string(), "--max-degree", "5", "-q"},
+              scratch)
+          .status,
+      0);
+  const json capped = read_json(scratch / "capped" / "report.json");
+  EXPECT_EQ(capped["exported_profile"]["degree"], 5);
+  EXPECT_LE(capped["exported_profile"]["max_radial_error_mm"].get<double>(), 1e-3);
+}
+
+TEST(Cli, UnknownProjectFieldsWarnAndRun) {
+  const ScratchDir scratch("cli_warn");
+  std::string xml = slurp(kExamples / "roller.xml");
+  xml.replace(xml.find("rpm=\"300\""), 9, "rpm=\"300\" colour=\"red\"");
+  xml.replace(xml.find("</cam>"), 6, "<note/>\n  </cam>");
+  spit(scratch / "warn.xml", xml);
+  const CliRun run = run_cli(
+      {"cam", (scratch / "warn.xml").string(), "--out", (scratch / "out").string(), "-q"}, scratch);
+  EXPECT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.err.find("warn.xml:5: unknown attribute 'colour' on <cam> ignored"),
+            std::string::npos)
+      << run.err;
+  EXPECT_NE(run.err.find("unknown element <note> in <cam> ignored"), std::string::npos) << run.err;
+  EXPECT_EQ(snapshot(scratch / "out").size(), 12u);
+}
+
+}  // namespace
+}  // namespace polarform

@@ -1,0 +1,195 @@
+// The polarform CLI on bad input: a table of broken projects (malformed XML, wrong types, negative
+// radii, unknown laws, segments that leave a gap, overlap or stop short of 360°, bad tolerances,
+// infeasible designs) and bad options. Each exits with status 2 (no crash), prints one line on
+// stderr naming the file and the line / field, and writes nothing: the output directory is not
+// created, and one that holds a previous good run is left exactly as it was.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "tests/support/jobs/cam_job_support.h"
+#include "tests/ui/cli/cli_run.h"
+
+namespace polarform {
+namespace {
+
+using namespace cam_job_test;
+
+const std::string kGood =
+    "<?xml version=\"1.0\"?>\n"
+    "<polarform version=\"1\">\n"
+    "  <cam type=\"plate\" follower=\"roller\" base-radius=\"40\" roller-radius=\"10\" "
+    "rpm=\"300\">\n"
+    "    <segment kind=\"dwell\" to=\"90\"/>\n"
+    "    <segment kind=\"rise\" law=\"cycloidal\" lift=\"20\" to=\"180\"/>\n"
+    "    <segment kind=\"dwell\" to=\"240\"/>\n"
+    "    <segment kind=\"return\" law=\"4-5-6-7\" to=\"360\"/>\n"
+    "  </cam>\n"
+    "  <conversion tolerance=\"0.001\"/>\n"
+    "</polarform>\n";
+
+// kGood with the first occurrence of `from` replaced by `to`.
+std::string edited(const std::string& from, const std::string& to) {
+  std::string xml = kGood;
+  const auto at = xml.find(from);
+  if (at == std::string::npos) throw std::runtime_error("kGood has no '" + from + "'");
+  return xml.replace(at, from.size(), to);
+}
+
+struct BadProject {
+  std::string name;
+  std::string xml;
+  std::string expected;  // a fragment of the message, with the line number where there is one
+};
+
+std::vector<BadProject> bad_projects() {
+  return {
+      {"truncated", kGood.substr(0, 150), ":4: malformed XML"},
+      {"empty", "", "malformed XML: the document is empty"},
+      {"not_xml", "base-radius = 40\n", "malformed XML"},
+      {"wrong_root", "<project version=\"1\"><cam/></project>\n",
+       ":1: <project>: expected the root element <polarform>"},
+      {"wrong_version", edited("version=\"1\"", "version=\"2\""),
+       ":2: <polarform> attribute 'version'"},
+      {"no_cam", "<polarform version=\"1\"/>\n", "no <cam> element"},
+      {"no_segments",
+       "<polarform version=\"1\"><cam follower=\"knife-edge\" base-radius=\"40\"/>"
+       "</polarform>\n",
+       "no <segment> elements"},
+      {"radius_not_a_number", edited("base-radius=\"40\"", "base-radius=\"forty\""),
+       ":3: <cam> attribute 'base-radius': expected a finite number, got 'forty'"},
+      {"unknown_cam_type", edited("type=\"plate\"", "type=\"disk\""),
+       ":3: <cam> attribute 'type': expected one of plate|cylindrical, got 'disk'"},
+      {"negative_base_radius", edited("base-radius=\"40\"", "base-radius=\"-40\""),
+       ":3: <cam> attribute 'base-radius': expected a number > 0, got '-40'"},
+      {"negative_roller_radius", edited("roller-radius=\"10\"", "roller-radius=\"-10\""),
+       ":3: <cam> attribute 'roller-radius': expected a number > 0, got '-10'"},
+      {"missing_roller_radius", edited("roller-radius=\"10\"", ""),
+       ":3: <cam> attribute 'roller-radius': expected a number (attribute is missing)"},
+      {"unknown_law", edited("cycloidal", "parabolic"), ":5: <segment> attribute 'law'"},
+      {"unknown_kind", edited("kind=\"rise\"", "kind=\"hold\""),
+       ":5: <segment> attribute 'kind': expected one of dwell|rise|return, got 'hold'"},
+      {"angle_not_a_number", edited("to=\"180\"", "to=\"180deg\""),
+       ":5: <segment> attribute 'to': expected a finite number, got '180deg'"},
+      {"backwards_segment", edited("to=\"180\"", "to=\"80\""),
+       ":5: <segment> attribute 'to': expected an angle after the segment start 90°"},
+      {"not_covering_360", edited("to=\"360\"", "to=\"350\""),
+       ":3: <cam>: the segments end at 350°; they must cover 0° to 360°"},
+      {"gap", edited("law=\"4-5-6-7\"", "law=\"4-5-6-7\" from=\"250\""),
+       ":7: <segment>: segment starts at 250° but the previous one ends at 240° (a gap)"},
+      {"overlap", edited("law=\"4-5-6-7\"", "law=\"4-5-6-7\" from=\"230\""),
+       ":7: <segment>: segment starts at 230° but the previous one ends at 240° (an overlap)"},
+      {"negative_lift", edited("lift=\"20\"", "lift=\"-20\""),
+       ":5: <segment> attribute 'lift': expected a number > 0, got '-20'"},
+      {"zero_tolerance", edited("tolerance=\"0.001\"", "tolerance=\"0\""),
+       ":9: <conversion> attribute 'tolerance': expected a number > 0, got '0'"},
+      {"text_tolerance", edited("tolerance=\"0.001\"", "tolerance=\"fine\""),
+       ":9: <conversion> attribute 'tolerance': expected a finite number, got 'fine'"},
+      {"unreachable_tolerance", edited("tolerance=\"0.001\"", "tolerance=\"1e-12\""),
+       ":9: <conversion> attribute 'tolerance': expected a tolerance >= 1e-09 mm, got '1e-12'"},
+      {"fractional_max_degree", edited("tolerance=\"0.001\"", "max-degree=\"2.5\""),
+       ":9: <conversion> attribute 'max-degree': expected an integer, got '2.5'"},
+      {"offset_beyond_prime_circle", edited("rpm=\"300\"", "rpm=\"300\" offset=\"60\""),
+       "follower offset |e| = 60 mm must be below the prime radius 50 mm"},
+      {"undercut",
+       edited("base-radius=\"40\" roller-radius=\"10\"", "base-radius=\"5\" roller-radius=\"40\""),
+       "not single-valued"},
+  };
+}
+
+// Runs `polarform cam` on each bad project into `out` and checks status, message and `out`.
+void expect_rejected_everywhere(const ScratchDir& scratch, const fs::path& out) {
+  const std::map<std::string, std::string> before = snapshot(out);
+  for (const BadProject& bad : bad_projects()) {
+    SCOPED_TRACE(bad.name);
+    const fs::path file = scratch / (bad.name + ".xml");
+    spit(file, bad.xml);
+    const CliRun run = run_cli({"cam", file.string(), "--out", out.string()}, scratch);
+    EXPECT_EQ(run.status, 2) << run.err;
+    EXPECT_EQ(run.out, "");
+    EXPECT_EQ(run.err.rfind("polarform: error: " + file.string(), 0), 0u) << run.err;
+    EXPECT_NE(run.err.find(bad.expected), std::string::npos) << run.err;
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+    EXPECT_EQ(fs::exists(out), !before.empty());
+    EXPECT_TRUE(snapshot(out) == before) << "the output directory changed";
+  }
+}
+
+TEST(CliBadInput, BrokenProjectsExitTwoAndWriteNothing) {
+  const ScratchDir scratch("bad_projects");
+  spit(scratch / "good.xml", kGood);  // the table's base is itself a good project
+  ASSERT_EQ(
+      run_cli({"cam", (scratch / "good.xml").string(), "--out", (scratch / "ok").string(), "-q"},
+              scratch)
+          .status,
+      0);
+  expect_rejected_everywhere(scratch, scratch / "out");
+}
+
+TEST(CliBadInput, BrokenProjectsLeaveAPreviousRunUntouched) {
+  const ScratchDir scratch("bad_projects_over_good");
+  spit(scratch / "good.xml", kGood);
+  ASSERT_EQ(
+      run_cli({"cam", (scratch / "good.xml").string(), "--out", (scratch / "out").string(), "-q"},
+              scratch)
+          .status,
+      0);
+  ASSERT_EQ(snapshot(scratch / "out").size(), 12u);
+  expect_rejected_everywhere(scratch, scratch / "out");
+}
+
+struct BadCommand {
+  std::vector<std::string> args;  // "OUT" stands for the output directory
+  std::string expected;
+};
+
+TEST(CliBadInput, BadOptionsExitTwoAndWriteNothing) {
+  const ScratchDir scratch("bad_options");
+  const std::string roller = (kExamples / "roller.xml").string();
+  const std::string missing = (scratch / "missing.xml").string();
+  const std::vector<BadCommand> commands = {
+      {{"cam", missing, "--out", "OUT"}, missing},
+      {{"cam", roller, "--out", "OUT", "--tol", "0"},
+       "--tol: expected a tolerance >= 1e-09 mm, got '0'"},
+      {{"cam", roller, "--out", "OUT", "--tol", "-1"}, "--tol: expected a tolerance >= 1e-09 mm"},
+      {{"cam", roller, "--out", "OUT", "--tol", "abc"}, "--tol: expected a tolerance >= 1e-09 mm"},
+      {{"cam", roller, "--out", "OUT", "--tol", "1e-12"}, "got '1e-12'"},
+      {{"cam", roller, "--out", "OUT", "--base", "bezier"}, "--base"},
+      {{"cam", roller, "--out", "OUT", "--solid", "-5"}, "--solid: expected a length > 0 in mm"},
+      {{"cam", roller, "--out", "OUT", "--max-degree", "0"}, "--max-degree"},
+      {{"cam", (kExamples / "cylindrical.xml").string(), "--out", "OUT", "--solid", "10"},
+       "--solid applies to plate cams only"},
+      {{"cam", roller}, "--out"},
+      {{"study", missing, "--out", "OUT"}, missing},
+      {{"study", roller, "--out", "OUT", "--tol", "1e-2"},
+       "--tol '1e-2': expected LOOSEST:TIGHTEST"},
+      {{"study", roller, "--out", "OUT", "--tol", "1e-2:1e-12"},
+       "--tol '1e-2:1e-12': expected LOOSEST >= TIGHTEST >= 1e-09 mm"},
+      {{"study", roller, "--out", "OUT", "--tol", "1e-4:1e-2"}, "expected LOOSEST >= TIGHTEST"},
+      {{"study", roller, "--out", "OUT", "--steps-per-decade", "0"}, "--steps-per-decade"},
+  };
+  const std::string out = (scratch / "out").string();
+  for (BadCommand c : commands) {
+    std::replace(c.args.begin(), c.args.end(), std::string("OUT"), out);
+    const CliRun run = run_cli(c.args, scratch);
+    SCOPED_TRACE(c.args[0] + " " + c.args.back());
+    EXPECT_EQ(run.status, 2) << run.err;
+    EXPECT_NE(run.err.find(c.expected), std::string::npos) << run.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
+}
+
+TEST(CliBadInput, StudyOfABrokenProjectNamesTheFile) {
+  const ScratchDir scratch("bad_study");
+  const fs::path file = scratch / "undercut.xml";
+  spit(file,
+       edited("base-radius=\"40\" roller-radius=\"10\"", "base-radius=\"5\" roller-radius=\"40\""));
+  const CliRun run =
+      run_cli({"study", file.string(), "--out", (scratch / "out").string(), "-q"}, scratch);
+  EXPECT_EQ(run.status, 2) << run.err;
+  EXPECT_EQ(run.err.rfind("polarform: error: " + file.string() + ": ", 0), 0u) << run.err;
+  EXPECT_FALSE(fs::exists(scratch / "out"));
+}
+
+}  // namespace
+}  // namespace polarform

@@ -1,0 +1,192 @@
+// The polarform binary on the fit-family commands: exit code 0 and the outputs on the bundled
+// examples, exit code 2 with one error line naming the line on a broken scan, and no files then.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "tests/support/jobs/job_test_support.h"
+
+namespace polarform {
+namespace {
+
+using test::example;
+using test::files_in;
+using test::read_json;
+using test::scratch_dir;
+using test::write_text;
+
+struct Outcome {
+  int code;
+  std::string err;
+};
+
+// Runs polarform with `args` (shell words), stderr captured into a file of the scratch dir.
+Outcome polarform(const std::string& args, const std::filesystem::path& dir) {
+  const auto err = dir / "stderr.txt";
+  const std::string cmd = std::string(POLARFORM_BINARY_DIR) + "/ui/cli/polarform " + args +
+                          " >/dev/null 2>" + err.string();
+  const int status = std::system(cmd.c_str());
+  std::ifstream in(err);
+  std::stringstream text;
+  text << in.rdbuf();
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
+}
+
+TEST(Cli, FitVizAndScanCamSucceedOnTheExamples) {
+  const auto dir = scratch_dir();
+  EXPECT_EQ(polarform("fit " + example("scans/vase.xyz") + " --out " + (dir / "vase").string() +
+                          " --ctrl 14,14 --quiet",
+                      dir)
+                .code,
+            0);
+  const nlohmann::json fit = read_json(dir / "vase/report.json");
+  EXPECT_EQ(fit["method"], "cylindrical");
+  EXPECT_EQ(fit["control_net"]["F"], nlohmann::json::array({14, 14}));
+  EXPECT_EQ(polarform("viz " + example("scans/sphere_grid.csv") + " --out " +
+                          (dir / "viz").string() + " -q",
+                      dir)
+                .code,
+            0);
+  EXPECT_TRUE(std::filesystem::exists(dir / "viz/surface.x3d"));
+  EXPECT_EQ(polarform("scan-cam " + example("scans/cam_profile.xyz") + " --nominal " +
+                          example("cams/roller.xml") + " --tol 0.01 --out " +
+                          (dir / "cam").string() + " -q",
+                      dir)
+                .code,
+            0);
+  EXPECT_NEAR(read_json(dir / "cam/report.json")["alignment"]["phase_deg"].get<double>(), 30.0,
+              0.01);
+}
+
+// A fit project names the scan (relative to itself) and the options; flags override them.
+TEST(Cli, FitRunsAProjectAndFlagsOverrideIt) {
+  const auto dir = scratch_dir();
+  ASSERT_EQ(polarform("fit " + example("scans/sphere_like_fit.xml") + " --out " +
+                          (dir / "project").string() + " -q",
+                      dir)
+                .code,
+            0);
+  const nlohmann::json fit = read_json(dir / "project/report.json");
+  EXPECT_EQ(fit["method"], "spherical");
+  EXPECT_EQ(fit["control_net"]["F"], nlohmann::json::array({12, 24}));
+  ASSERT_EQ(polarform("fit " + example("scans/sphere_like_fit.xml") + " --ctrl 10,16 --out " +
+                          (dir / "override").string() + " -q",
+                      dir)
+                .code,
+            0);
+  EXPECT_EQ(read_json(dir / "override/report.json")["control_net"]["F"],
+            nlohmann::json::array({10, 16}));
+
+  write_text(dir / "bad.xml", "<polarform version=\"1\">\n<fit scan=\"a.xyz\" degree=\"3\"/>\n"
+                              "</polarform>\n");
+  const Outcome bad = polarform("fit " + (dir / "bad.xml").string() + " --out " +
+                                    (dir / "bad").string(),
+                                dir);
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("bad.xml:2: <fit> attribute 'degree'"), std::string::npos) << bad.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "bad"));
+}
+
+// Fairing and base arcs from the command line or the project: for the same F, the quartic base
+// raises the NURBS degrees of a spherical product from (5, 5) to (7, 7) (arcs of degree 4 instead
+// of 2); GCV picks its own λ; a project's fixed λ is used as given; bad values exit 2.
+TEST(Cli, FairnessAndBaseArcsReachTheFit) {
+  const auto dir = scratch_dir();
+  const std::string project = example("scans/sphere_like_fit.xml");
+  ASSERT_EQ(polarform("fit " + project + " --out " + (dir / "rqb").string() + " -q", dir).code, 0);
+  ASSERT_EQ(polarform("fit " + project + " --base quartic --out " + (dir / "quartic").string() +
+                          " -q",
+                      dir)
+                .code,
+            0);
+  ASSERT_EQ(polarform("fit " + project + " --fairness gcv --out " + (dir / "gcv").string() +
+                          " -q",
+                      dir)
+                .code,
+            0);
+  const nlohmann::json rqb = read_json(dir / "rqb/report.json");
+  const nlohmann::json quartic = read_json(dir / "quartic/report.json");
+  const nlohmann::json gcv = read_json(dir / "gcv/report.json");
+  EXPECT_EQ(rqb["base"], "rqb");
+  EXPECT_EQ(rqb["degrees"]["nurbs"], nlohmann::json::array({5, 5}));
+  EXPECT_EQ(quartic["base"], "quartic");
+  EXPECT_EQ(quartic["degrees"]["nurbs"], nlohmann::json::array({7, 7}));
+  EXPECT_EQ(quartic["control_net"]["F"], rqb["control_net"]["F"]);
+  EXPECT_EQ(rqb["fairness"], "relative");
+  EXPECT_EQ(rqb["fairness_weight"], 1e-7);
+  EXPECT_EQ(gcv["fairness"], "gcv");
+  EXPECT_FALSE(gcv.contains("fairness_weight"));
+  EXPECT_NE(gcv["fairness_lambda"], rqb["fairness_lambda"]);
+  // Both fit the σ = 0.02 mm scan to its noise.
+  for (const auto* r : {&rqb, &quartic, &gcv})
+    EXPECT_LT((*r)["error_mm"]["rms"].get<double>(), 0.025);
+
+  // A project's fixed λ, and flags that refuse bad values.
+  write_text(dir / "fixed.xml",
+             "<polarform version=\"1\">\n<fit scan=\"" + example("scans/sphere_like.xyz") +
+                 "\" method=\"spherical\" closed=\"yes\" pole=\"g1\" fairness=\"fixed\" "
+                 "lambda=\"0.001\"/>\n</polarform>\n");
+  ASSERT_EQ(polarform("fit " + (dir / "fixed.xml").string() + " --out " +
+                          (dir / "fixed").string() + " -q",
+                      dir)
+                .code,
+            0);
+  const nlohmann::json fixed = read_json(dir / "fixed/report.json");
+  EXPECT_EQ(fixed["fairness"], "fixed");
+  EXPECT_EQ(fixed["fairness_lambda"], 0.001);
+  for (const char* bad : {"--fairness smooth", "--lambda 0", "--lambda -1e-3", "--base cubic"}) {
+    const Outcome r =
+        polarform("fit " + project + " " + bad + " --out " + (dir / "bad").string(), dir);
+    EXPECT_EQ(r.code, 2) << bad;
+    EXPECT_NE(r.err.find(std::string(bad).substr(0, std::string(bad).find(' '))),
+              std::string::npos)
+        << r.err;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir / "bad"));
+}
+
+TEST(Cli, BrokenScanExitsTwoNamingTheLineAndWritesNothing) {
+  const auto dir = scratch_dir();
+  const auto scan = write_text(dir / "bad.xyz", "x y z\n1 2 3\n4 5 6\n7 8 abc\n1 1 1\n");
+  for (const std::string command : {"fit", "scan-cam"}) {
+    const Outcome r =
+        polarform(command + " " + scan.string() + " --out " + (dir / command).string(), dir);
+    EXPECT_EQ(r.code, 2) << command;
+    EXPECT_NE(r.err.find("bad.xyz: line 4"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / command)) << command;
+  }
+  const Outcome grid =
+      polarform("viz " + write_text(dir / "g.csv", "p,phi_deg,theta_deg\n1,2\n").string() +
+                    " --out " + (dir / "viz").string(),
+                dir);
+  EXPECT_EQ(grid.code, 2);
+  EXPECT_NE(grid.err.find("g.csv:2:"), std::string::npos) << grid.err;
+}
+
+TEST(Cli, BadOptionsExitTwo) {
+  const auto dir = scratch_dir();
+  const std::string scan = example("scans/vase.xyz");
+  EXPECT_EQ(polarform("fit " + scan + " --out " + (dir / "a").string() + " --degree 3,x", dir).code,
+            2);
+  EXPECT_EQ(
+      polarform("fit " + scan + " --out " + (dir / "b").string() + " --ctrl 8 --tol 0.1", dir).code,
+      2);
+  EXPECT_EQ(
+      polarform("fit " + scan + " --out " + (dir / "c").string() + " --method conical", dir).code,
+      2);
+  const Outcome r = polarform(
+      "scan-cam " + example("scans/cam_profile.xyz") + " --tol 0.01 --out " + (dir / "d").string(),
+      dir);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--nominal"), std::string::npos) << r.err;
+  EXPECT_EQ(files_in(dir), std::set<std::string>{"stderr.txt"});
+}
+
+}  // namespace
+}  // namespace polarform
