@@ -7,28 +7,18 @@
 #include <tinyxml2.h>
 
 #include <cmath>
-#include <locale>
 #include <numbers>
-#include <sstream>
 #include <vector>
 
 #include "export/colormap.h"
 #include "src/error.h"
 #include "src/nurbs/tessellation.h"
+#include "tests/support/export/x3d_numbers.h"
 
 namespace polarform {
 namespace {
 
-std::vector<double> numbers(const char* text) {
-  std::string s = text ? text : "";
-  for (char& c : s)
-    if (c == ',') c = ' ';
-  std::istringstream in(s);
-  in.imbue(std::locale::classic());
-  std::vector<double> out;
-  for (double x; in >> x;) out.push_back(x);
-  return out;
-}
+using exchange_test::x3d_numbers;
 
 // p = 100 + 20 cos φ on a 10° spherical grid: a smooth field with a known range.
 ScalarFieldSurface pressure_field() {
@@ -59,8 +49,9 @@ TEST(X3dFieldScene, ColouredTessellationOnTheSurfaceBeforeTheExactPatch) {
   EXPECT_NE(shown->NextSiblingElement("Shape")->FirstChildElement("NurbsPatchSurface"), nullptr);
   const tinyxml2::XMLElement* faces = shown->FirstChildElement("IndexedFaceSet");
   const std::vector<double> xyz =
-      numbers(faces->FirstChildElement("Coordinate")->Attribute("point"));
-  const std::vector<double> rgb = numbers(faces->FirstChildElement("Color")->Attribute("color"));
+      x3d_numbers(faces->FirstChildElement("Coordinate")->Attribute("point"));
+  const std::vector<double> rgb =
+      x3d_numbers(faces->FirstChildElement("Color")->Attribute("color"));
   // The grid: rows and cols equal steps and every interior knot (src/nurbs/tessellation.h).
   const NurbsSurface& S = f.surface;
   const std::vector<double> us =
@@ -71,7 +62,7 @@ TEST(X3dFieldScene, ColouredTessellationOnTheSurfaceBeforeTheExactPatch) {
   EXPECT_GT(nu, std::size_t(rows + 1));  // the knots of F and the base arcs add rows
   ASSERT_EQ(xyz.size(), 3 * nu * nv);
   ASSERT_EQ(rgb.size(), xyz.size());
-  EXPECT_EQ(numbers(faces->Attribute("coordIndex")).size(), 5 * (nu - 1) * (nv - 1));
+  EXPECT_EQ(x3d_numbers(faces->Attribute("coordIndex")).size(), 5 * (nu - 1) * (nv - 1));
   for (std::size_t i = 0; i < nu; ++i)
     for (std::size_t j = 0; j < nv; ++j) {
       const double u = us[i], v = vs[j];
@@ -87,7 +78,8 @@ TEST(X3dFieldScene, ColouredTessellationOnTheSurfaceBeforeTheExactPatch) {
     }
   // The control net: one point and one colour per control point, the colour of its value.
   const tinyxml2::XMLElement* net = sw->NextSiblingElement("Shape")->FirstChildElement("PointSet");
-  const std::vector<double> net_rgb = numbers(net->FirstChildElement("Color")->Attribute("color"));
+  const std::vector<double> net_rgb =
+      x3d_numbers(net->FirstChildElement("Color")->Attribute("color"));
   ASSERT_EQ(net_rgb.size(), 3u * S.size_u() * S.size_v());
   const Eigen::Vector3d first = sequential_color(f.control_values[0], f.min_value, f.max_value);
   EXPECT_NEAR(net_rgb[0], first[0], 1e-12);

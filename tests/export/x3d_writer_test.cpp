@@ -2,6 +2,8 @@
 // Viewpoint framing every control point, one Shape with Appearance per item, unique DEFs) and
 // every number; a NurbsPatchSurface rebuilt from the parsed arrays with the X3D ordering
 // (index i + j uDimension) evaluates to the original surface.
+#include "export/x3d_writer.h"
+
 #include <gtest/gtest.h>
 #include <tinyxml2.h>
 
@@ -11,26 +13,15 @@
 #include <sstream>
 
 #include "export/exchange_geometry.h"
-#include "export/x3d_writer.h"
 #include "src/error.h"
 #include "tests/support/export/exchange_fixtures.h"
+#include "tests/support/export/x3d_numbers.h"
 
 namespace polarform {
 namespace {
 
 using namespace exchange_test;
 using tinyxml2::XMLElement;
-
-std::vector<double> numbers(const char* text) {
-  std::string s = text ? text : "";
-  for (char& c : s)
-    if (c == ',') c = ' ';
-  std::istringstream in(s);
-  in.imbue(std::locale::classic());
-  std::vector<double> out;
-  for (double x; in >> x;) out.push_back(x);
-  return out;
-}
 
 struct Parsed {
   tinyxml2::XMLDocument doc;
@@ -75,7 +66,7 @@ TEST(X3dWriter, DocumentStructure) {
   // The Viewpoint (default fieldOfView pi/4, looking along -z) sees every control point.
   const XMLElement* vp = x.scene->FirstChildElement("Viewpoint");
   ASSERT_NE(vp, nullptr);
-  const std::vector<double> eye = numbers(vp->Attribute("position"));
+  const std::vector<double> eye = x3d_numbers(vp->Attribute("position"));
   ASSERT_EQ(eye.size(), 3u);
   std::vector<Eigen::Vector3d> all = control_points_of(lift_to_3d(ellipse(25, 25)));
   for (const auto& p : control_points_of(degree12())) all.push_back(p);
@@ -94,21 +85,21 @@ TEST(X3dWriter, CurveNumbers) {
   const XMLElement* g = x.scene->FirstChildElement("Shape")->FirstChildElement("NurbsCurve");
   ASSERT_NE(g, nullptr);
   EXPECT_EQ(g->IntAttribute("order"), 13);
-  EXPECT_EQ(numbers(g->Attribute("knot")), c.knots());
-  EXPECT_EQ(numbers(g->Attribute("weight")), c.weights());
+  EXPECT_EQ(x3d_numbers(g->Attribute("knot")), c.knots());
+  EXPECT_EQ(x3d_numbers(g->Attribute("weight")), c.weights());
   EXPECT_FALSE(g->BoolAttribute("closed"));
   EXPECT_GE(g->IntAttribute("tessellation"), 64);
   const XMLElement* coord = g->FirstChildElement("Coordinate");
   ASSERT_NE(coord, nullptr);
   EXPECT_STREQ(coord->Attribute("containerField"), "controlPoint");
-  const std::vector<double> p = numbers(coord->Attribute("point"));
+  const std::vector<double> p = x3d_numbers(coord->Attribute("point"));
   ASSERT_EQ(static_cast<int>(p.size()), 3 * c.size());
   for (int i = 0; i < c.size(); ++i)
     for (int k = 0; k < 3; ++k) EXPECT_EQ(p[3 * i + k], c.control_point(i)[k]);
-  EXPECT_EQ(numbers(x.scene->FirstChildElement("Shape")
-                        ->FirstChildElement("Appearance")
-                        ->FirstChildElement("Material")
-                        ->Attribute("emissiveColor")),
+  EXPECT_EQ(x3d_numbers(x.scene->FirstChildElement("Shape")
+                            ->FirstChildElement("Appearance")
+                            ->FirstChildElement("Material")
+                            ->Attribute("emissiveColor")),
             (std::vector<double>{0.1, 0.2, 0.8}));
 }
 
@@ -123,9 +114,11 @@ TEST(X3dWriter, PatchSurfaceRebuiltFromParsedArrays) {
     EXPECT_EQ(nu, s.size_u());
     EXPECT_EQ(nv, s.size_v());
     EXPECT_FALSE(g->BoolAttribute("solid", true));
-    const std::vector<double> uk = numbers(g->Attribute("uKnot")), vk = numbers(g->Attribute("vKnot"));
-    const std::vector<double> wt = numbers(g->Attribute("weight"));
-    const std::vector<double> pt = numbers(g->FirstChildElement("Coordinate")->Attribute("point"));
+    const std::vector<double> uk = x3d_numbers(g->Attribute("uKnot")),
+                              vk = x3d_numbers(g->Attribute("vKnot"));
+    const std::vector<double> wt = x3d_numbers(g->Attribute("weight"));
+    const std::vector<double> pt =
+        x3d_numbers(g->FirstChildElement("Coordinate")->Attribute("point"));
     ASSERT_EQ(static_cast<int>(uk.size()), nu + g->IntAttribute("uOrder"));
     ASSERT_EQ(static_cast<int>(vk.size()), nv + g->IntAttribute("vOrder"));
     ASSERT_EQ(static_cast<int>(wt.size()), nu * nv);
@@ -171,11 +164,12 @@ TEST(X3dWriter, ColouredMeshesPointsAndSwitches) {
   EXPECT_STREQ(mesh->NextSiblingElement("Shape")->Attribute("DEF"), "exact");
   EXPECT_NE(mesh->NextSiblingElement("Shape")->FirstChildElement("NurbsPatchSurface"), nullptr);
   const XMLElement* faces = mesh->FirstChildElement("IndexedFaceSet");
-  EXPECT_EQ(numbers(faces->Attribute("coordIndex")),
+  EXPECT_EQ(x3d_numbers(faces->Attribute("coordIndex")),
             (std::vector<double>{0, 1, 2, 3, -1, 1, 4, 2, 3, -1}));
   const std::vector<double> xyz =
-      numbers(faces->FirstChildElement("Coordinate")->Attribute("point"));
-  const std::vector<double> rgb = numbers(faces->FirstChildElement("Color")->Attribute("color"));
+      x3d_numbers(faces->FirstChildElement("Coordinate")->Attribute("point"));
+  const std::vector<double> rgb =
+      x3d_numbers(faces->FirstChildElement("Color")->Attribute("color"));
   ASSERT_EQ(xyz.size(), 15u);
   ASSERT_EQ(rgb.size(), 15u);
   for (std::size_t k = 0; k < points.size(); ++k)
@@ -187,9 +181,9 @@ TEST(X3dWriter, ColouredMeshesPointsAndSwitches) {
   const XMLElement* net = sw->NextSiblingElement("Shape");
   ASSERT_NE(net, nullptr);
   EXPECT_STREQ(net->Attribute("DEF"), "net");
-  EXPECT_EQ(
-      numbers(net->FirstChildElement("PointSet")->FirstChildElement("Color")->Attribute("color")),
-      rgb);
+  EXPECT_EQ(x3d_numbers(
+                net->FirstChildElement("PointSet")->FirstChildElement("Color")->Attribute("color")),
+            rgb);
 }
 
 TEST(X3dWriter, RejectsBadInput) {
