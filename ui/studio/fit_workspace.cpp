@@ -265,7 +265,7 @@ void FitWorkspace::draw_controls() {
     if (ImGui::Button("Cancel")) fit_task_.cancel();
   } else {
     ImGui::BeginDisabled(!cloud_);
-    if (ImGui::Button("Fit surface", ImVec2(-FLT_MIN, 0))) start_fit();
+    if (ImGui::Button("Fit", ImVec2(-FLT_MIN, 0))) start_fit();
     ImGui::EndDisabled();
   }
   if (!fit_error_.empty()) {
