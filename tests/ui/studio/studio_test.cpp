@@ -2,7 +2,7 @@
 // not blank (pixel statistics of the PNG), a scripted edit (--bench-frames) changes the numbers
 // the app reports, scripts (--script) drive undo/redo, save as, every export, drag-and-drop and
 // the state kept between runs, and bad input — a broken project, an infeasible design, a bad
-// script — is reported while the app keeps running. Skips with a message when xvfb-run or the
+// script — is reported while the app keeps running. Skips with a message when Xvfb or the
 // studio binary is missing.
 #include <gtest/gtest.h>
 
@@ -11,7 +11,6 @@
 
 #include <Eigen/Core>
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -25,11 +24,11 @@
 #include <set>
 #include <sstream>
 #include <string>
-#include <thread>
 
 #include "jobs/project/cam_project.h"
 #include "jobs/project/fit_project.h"
 #include "jobs/report/report_lines.h"
+#include "tests/ui/studio/xvfb_server.h"
 
 namespace {
 
@@ -54,24 +53,19 @@ StudioRun run_once(const std::string& command) {
   return r;
 }
 
-// Runs the app on its own Xvfb display. `xvfb-run -a` picks a free display number, but two runs
-// started together (ctest -j) may pick the same one; the loser's server fails to start and the
-// run is repeated.
+// The test process's X server, started at the first use.
+const polarform::studio_test::XvfbServer& x_server() {
+  static const polarform::studio_test::XvfbServer server;
+  return server;
+}
+
+// Runs the app on the test process's own Xvfb display.
 StudioRun run_studio(const std::string& arguments) {
-  const std::string command =
+  return run_once(
       // A fixed SOURCE_DATE_EPOCH stamps the exported IGES and STEP files alike, so that they can
       // be compared byte for byte with the CLI's.
-      "SOURCE_DATE_EPOCH=1700000000 xvfb-run -a -s '-screen 0 1920x1200x24' '" + kStudio.string() +
-      "' " + arguments + " 2>&1";
-  StudioRun r;
-  for (int attempt = 0; attempt < 5; ++attempt) {
-    r = run_once(command);
-    if (r.output.find("Xvfb failed to start") == std::string::npos &&
-        r.output.find("cannot initialise GLFW") == std::string::npos)
-      break;
-    std::this_thread::sleep_for(std::chrono::milliseconds(300 + 400 * attempt));
-  }
-  return r;
+      "DISPLAY=" + x_server().display().value_or("") + " SOURCE_DATE_EPOCH=1700000000 '" +
+      kStudio.string() + "' " + arguments + " 2>&1");
 }
 
 // "key=value" lines of one block of the output (after `header`, up to the next line without '=').
@@ -145,10 +139,9 @@ PixelStats pixel_stats(const fs::path& png) {
 class StudioTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    if (std::system("command -v xvfb-run > /dev/null 2>&1") != 0)
-      GTEST_SKIP()
-          << "xvfb-run not found: install the Debian packages xvfb, xauth and libgl1-mesa-dri "
-             "(scripts/install-deps.sh) to run the studio tests";
+    if (!x_server().display())
+      GTEST_SKIP() << "no Xvfb display: install the Debian packages xvfb and libgl1-mesa-dri "
+                      "(scripts/install-deps.sh) to run the studio tests";
     if (!fs::exists(kStudio))
       GTEST_SKIP() << "polarform-studio was not built (" << kStudio
                    << "); build it with POLARFORM_BUILD_STUDIO=ON";
