@@ -102,10 +102,17 @@ void append_ascii(std::string& out, const Record& r) {
 void write_ply(const std::filesystem::path& path, const Eigen::Matrix3Xd& points,
                const std::vector<std::array<unsigned char, 3>>* colors,
                const std::vector<double>* scalar, std::string_view scalar_name, bool binary) {
+  write_file_atomically(path, ply_writer(path, points, colors, scalar, scalar_name, binary));
+}
+
+std::function<void(std::ostream&)> ply_writer(
+    const std::filesystem::path& path, const Eigen::Matrix3Xd& points,
+    const std::vector<std::array<unsigned char, 3>>* colors, const std::vector<double>* scalar,
+    std::string_view scalar_name, bool binary) {
   validate(path, points, colors, scalar, scalar_name);
-  write_file_atomically(path, [&](std::ostream& out) {
+  return [&points, colors, scalar, name = std::string(scalar_name), binary](std::ostream& out) {
     const auto n = static_cast<std::size_t>(points.cols());
-    out << header(n, colors != nullptr, scalar, scalar_name, binary);
+    out << header(n, colors != nullptr, scalar, name, binary);
     std::string chunk;
     constexpr std::size_t kChunkBytes = 1 << 16;
     chunk.reserve(kChunkBytes + 256);
@@ -122,7 +129,7 @@ void write_ply(const std::filesystem::path& path, const Eigen::Matrix3Xd& points
       }
     }
     out.write(chunk.data(), static_cast<std::streamsize>(chunk.size()));
-  });
+  };
 }
 
 }  // namespace polarform

@@ -7,6 +7,8 @@
 #include <Eigen/Core>
 #include <array>
 #include <filesystem>
+#include <functional>
+#include <ostream>
 #include <string_view>
 #include <vector>
 
@@ -19,5 +21,13 @@ void write_ply(const std::filesystem::path& path, const Eigen::Matrix3Xd& points
                const std::vector<std::array<unsigned char, 3>>* colors = nullptr,
                const std::vector<double>* scalar = nullptr, std::string_view scalar_name = "value",
                bool binary = true);
+
+// The same checks (path names the file in messages), and a writer of the file's bytes to a
+// stream, for an output transaction; points, colors and scalar must outlive it.
+std::function<void(std::ostream&)> ply_writer(
+    const std::filesystem::path& path, const Eigen::Matrix3Xd& points,
+    const std::vector<std::array<unsigned char, 3>>* colors = nullptr,
+    const std::vector<double>* scalar = nullptr, std::string_view scalar_name = "value",
+    bool binary = true);
 
 }  // namespace polarform

@@ -275,8 +275,11 @@ std::vector<std::string> write_fit_outputs(const FitJobResult& r,
     colors[static_cast<std::size_t>(k)] = to_rgb8(diverging_color(d[k], limit));
     deviation[static_cast<std::size_t>(k)] = d[k];
   }
-  write_files_atomically(dir, content);
-  write_ply(dir / "deviation.ply", r.points, &colors, &deviation, "deviation");
+  OutputTransaction outputs(dir);  // deviation.ply with the others: all or nothing
+  for (const auto& [name, text] : content) outputs.add(name, text);
+  outputs.add("deviation.ply",
+              ply_writer(dir / "deviation.ply", r.points, &colors, &deviation, "deviation"));
+  outputs.commit();
   return fit_file_list(content);
 }
 

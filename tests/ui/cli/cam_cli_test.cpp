@@ -3,6 +3,7 @@
 // project and the report shows it; unknown project fields warn (naming line and name) but run.
 #include <gtest/gtest.h>
 
+#include <map>
 #include <regex>
 
 #include "tests/support/jobs/cam_job_support.h"
@@ -12,6 +13,40 @@ namespace polarform {
 namespace {
 
 using namespace cam_job_test;
+
+// Every file of a folder with its bytes; a sub-folder as "<dir>".
+std::map<std::string, std::string> listing(const fs::path& dir) {
+  std::map<std::string, std::string> out;
+  for (const auto& e : fs::directory_iterator(dir))
+    out[e.path().filename().string()] = fs::is_directory(e) ? "<dir>" : slurp(e.path());
+  return out;
+}
+
+// A run that fails while writing (a folder stands where one of its files goes) exits 2 naming
+// the file and leaves the earlier run's outputs byte for byte, for a bundle of text files (cam)
+// and one with the binary deviation.ply (fit).
+TEST(Cli, AFailedWriteLeavesTheEarlierOutputsAsTheyWere) {
+  const ScratchDir scratch("cli_transaction");
+  const fs::path scans = fs::path(POLARFORM_SOURCE_DIR) / "examples" / "scans";
+  const std::vector<std::vector<std::string>> runs = {
+      {"cam", (kExamples / "roller.xml").string(), "--tol", "0.002"},
+      {"fit", (scans / "vase.xyz").string(), "--ctrl", "8,8"}};
+  const std::vector<std::string> in_the_way = {"svaj.svg", "surface.x3d"};
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    const fs::path out = scratch / ("out" + std::to_string(k));
+    std::vector<std::string> args = runs[k];
+    args.insert(args.end(), {"--out", out.string(), "-q"});
+    ASSERT_EQ(run_cli(args, scratch).status, 0);
+    fs::remove(out / in_the_way[k]);
+    fs::create_directory(out / in_the_way[k]);
+    const auto before = listing(out);
+    args[3] = runs[k][0] == "cam" ? "0.001" : "10,10";  // another result, other bytes
+    const CliRun failed = run_cli(args, scratch);
+    EXPECT_EQ(failed.status, 2) << failed.err;
+    EXPECT_NE(failed.err.find(in_the_way[k]), std::string::npos) << failed.err;
+    EXPECT_TRUE(listing(out) == before) << runs[k][0] << ": the earlier outputs changed";
+  }
+}
 
 TEST(Cli, HelpAndVersionExitZero) {
   const ScratchDir scratch("cli_help");
