@@ -24,6 +24,70 @@ std::string exchange_real(double x, char exponent_letter) {
   return mantissa + exponent_letter + text.substr(e + 1);
 }
 
+namespace {
+
+// The base letters of U+00C0..U+017F ('_' where there is none; "AE", "ss", … below).
+constexpr std::string_view kLatinBase =
+    "AAAAAAACEEEEIIIIDNOOOOO_OUUUUYT_aaaaaaaceeeeiiiidnooooo_ouuuuyty"  // U+00C0..U+00FF
+    "AaAaAaCcCcCcCcDdDdEeEeEeEeEeGgGgGgGgHhHhIiIiIiIiIiJjJjKkkLlLlLlLlLl"
+    "NnNnNnnNnOoOoOoOoRrRrRrSsSsSsSsTtTtTtUuUuUuUuUuUuWwYyYZzZzZzs";  // U+0100..U+017F
+
+// The letters that fold to two: Æ æ ß Þ þ Ĳ ĳ Œ œ.
+std::string_view two_letters(char32_t c) {
+  switch (c) {
+    case U'\u00C6':
+      return "AE";
+    case U'\u00E6':
+      return "ae";
+    case U'\u00DF':
+      return "ss";
+    case U'\u00DE':
+      return "Th";
+    case U'\u00FE':
+      return "th";
+    case U'\u0132':
+      return "IJ";
+    case U'\u0133':
+      return "ij";
+    case U'\u0152':
+      return "OE";
+    case U'\u0153':
+      return "oe";
+    default:
+      return {};
+  }
+}
+
+}  // namespace
+
+std::string ascii_text(std::string_view utf8) {
+  std::string out;
+  for (std::size_t i = 0; i < utf8.size();) {
+    const unsigned char c = utf8[i];
+    if (c >= 0x20 && c < 0x7F) {
+      out += static_cast<char>(c);
+      ++i;
+      continue;
+    }
+    // A 2-byte UTF-8 sequence covers U+0080..U+07FF, Latin-1 and Latin Extended-A among them.
+    const bool two = (c & 0xE0) == 0xC0 && i + 1 < utf8.size() &&
+                     (static_cast<unsigned char>(utf8[i + 1]) & 0xC0) == 0x80;
+    const char32_t code =
+        two ? ((c & 0x1F) << 6) | (static_cast<unsigned char>(utf8[i + 1]) & 0x3F) : 0;
+    if (two && !two_letters(code).empty()) {
+      out += two_letters(code);
+    } else if (two && code >= 0xC0 && code <= 0x17F) {
+      out += kLatinBase[code - 0xC0];
+    } else {
+      out += '_';
+    }
+    // Skip the rest of the character: continuation bytes.
+    ++i;
+    while (i < utf8.size() && (static_cast<unsigned char>(utf8[i]) & 0xC0) == 0x80) ++i;
+  }
+  return out;
+}
+
 std::time_t stamp_time() {
   const char* epoch = std::getenv("SOURCE_DATE_EPOCH");
   if (!epoch) return std::time(nullptr);

@@ -6,6 +6,7 @@
 
 #include <ctime>
 #include <string>
+#include <string_view>
 
 namespace polarform {
 
@@ -13,6 +14,11 @@ namespace polarform {
 // marks an IGES double-precision real. Negative zero is written as "0.0". Throws InputError for
 // a non-finite value.
 std::string exchange_real(double x, char exponent_letter = 'E');
+
+// Text for a format that carries only printable ASCII (IGES): UTF-8 letters of Latin-1 and Latin
+// Extended-A with their diacritics removed ("rôle" → "role", "Łódź" → "Lodz", "ß" → "ss"), every
+// other character that is not printable ASCII, and every byte that is not UTF-8, as '_'.
+std::string ascii_text(std::string_view utf8);
 
 // The moment exchange files are stamped with: now, or SOURCE_DATE_EPOCH when set (seconds since
 // 1970 UTC; the reproducible-builds.org convention), so that the same input gives the same bytes.

@@ -166,7 +166,9 @@ std::string IgesWriter::str(const IgesHeader& header) const {
     }
   }
 
-  const std::string file_name = header.file_name.empty() ? "polarform.igs" : header.file_name;
+  // IGES carries ASCII only: names of the user's files and the texts about them are folded.
+  const std::string file_name =
+      ascii_text(header.file_name.empty() ? "polarform.igs" : header.file_name);
   const std::string product = "polarform";
   const std::string version = std::string("polarform ") + POLARFORM_VERSION;
   // IGES 5.3 Global section, parameters 3-25.
@@ -189,12 +191,12 @@ std::string IgesWriter::str(const IgesHeader& header) const {
       iges_string(stamp, "time stamp"),
       real(tol),  // minimum user-intended resolution
       real(max_abs_coordinate(all_points)),
-      iges_string(header.author, "author"),
-      iges_string(header.organization, "organization"),
+      iges_string(ascii_text(header.author), "author"),
+      iges_string(ascii_text(header.organization), "organization"),
       "11",  // IGES 5.3
       "0",   // no drafting standard
       iges_string(stamp, "model time stamp")};
-  return iges_file(header.description, globals, entities);
+  return iges_file(ascii_text(header.description), globals, entities);
 }
 
 void IgesWriter::save(const std::filesystem::path& path, const IgesHeader& header) const {

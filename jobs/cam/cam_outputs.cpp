@@ -208,7 +208,7 @@ std::map<std::string, std::string> render_cam_outputs(const CamJobResult& r,
   content.insert(svgs.begin(), svgs.end());
   const std::vector<std::string> files = report_file_list(content);
   const json report = cam_report_json(r, files);
-  content["report.json"] = report.dump(2) + "\n";
+  content["report.json"] = report_json_text(report);
   content["report.html"] = html_report(r, o, report, svgs);
   return content;
 }

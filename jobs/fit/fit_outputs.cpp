@@ -14,6 +14,7 @@
 #include "export/svg_plot.h"
 #include "export/x3d_writer.h"
 #include "jobs/fit/fit_plots.h"
+#include "jobs/report/output_files.h"
 #include "polarform_version.h"
 #include "src/error.h"
 #include "src/number_text.h"
@@ -256,7 +257,7 @@ std::map<std::string, std::string> render_fit_outputs(const FitJobResult& r) {
   content["preview.svg"] = preview;
   const std::vector<std::string> files = fit_file_list(content);
   const json report = fit_report_json(r, files);
-  content["report.json"] = report.dump(2) + "\n";
+  content["report.json"] = report_json_text(report);
   content["report.html"] = html_report(r, report, preview);
   return content;
 }

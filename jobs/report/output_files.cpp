@@ -13,4 +13,8 @@ std::vector<std::string> report_file_list(const std::map<std::string, std::strin
   return files;
 }
 
+std::string report_json_text(const nlohmann::ordered_json& report) {
+  return report.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
+}
+
 }  // namespace polarform

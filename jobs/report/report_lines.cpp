@@ -34,7 +34,7 @@ void append(std::string& out, const nlohmann::ordered_json& value, const std::st
     else if (value.is_string())
       out += one_line(value.get<std::string>());
     else
-      out += value.dump();
+      out += value.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
     out += "\n";
   }
 }

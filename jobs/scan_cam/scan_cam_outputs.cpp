@@ -13,6 +13,7 @@
 #include "export/step_writer.h"
 #include "export/svg_plot.h"
 #include "export/x3d_writer.h"
+#include "jobs/report/output_files.h"
 #include "jobs/scan_cam/scan_cam_plots.h"
 #include "polarform_version.h"
 #include "src/error.h"
@@ -258,7 +259,7 @@ std::vector<std::string> write_scan_cam_outputs(const ScanCamJobResult& r,
   files.push_back("report.json");
   std::sort(files.begin(), files.end());
   const json report = scan_cam_report_json(r, files);
-  content["report.json"] = report.dump(2) + "\n";
+  content["report.json"] = report_json_text(report);
   content["report.html"] = html_report(r, report, svgs);
 
   write_files_atomically(dir, content);

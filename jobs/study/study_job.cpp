@@ -9,6 +9,7 @@
 #include "export/csv_writer.h"
 #include "export/svg_plot.h"
 #include "jobs/cam/cam_job.h"
+#include "jobs/report/output_files.h"
 #include "jobs/study/study_plots.h"
 #include "polarform_version.h"
 #include "src/error.h"
@@ -75,7 +76,7 @@ std::vector<std::string> write_study_outputs(const StudyJobResult& r, const std:
                                          {"rows", rows},
                                          {"files", files},
                                          {"seconds", r.seconds}};
-  content["report.json"] = report.dump(2) + "\n";
+  content["report.json"] = report_json_text(report);
   write_files_atomically(dir, content);
   return files;
 }

@@ -179,7 +179,7 @@ std::map<std::string, std::string> render_vessel_outputs(const VesselJobResult& 
   content.insert(svgs.begin(), svgs.end());
   const std::vector<std::string> files = report_file_list(content);
   const json report = vessel_report_json(r, files);
-  content["report.json"] = report.dump(2) + "\n";
+  content["report.json"] = report_json_text(report);
   content["report.html"] = html_report(r, o, report, svgs);
   return content;
 }

@@ -10,6 +10,7 @@
 #include "export/step_writer.h"
 #include "export/svg_plot.h"
 #include "export/x3d_field_scene.h"
+#include "jobs/report/output_files.h"
 #include "jobs/viz/viz_plots.h"
 #include "polarform_version.h"
 #include "src/error.h"
@@ -111,7 +112,7 @@ std::vector<std::string> write_viz_outputs(const VizJobResult& r,
   for (const auto& [file, text] : content) files.push_back(file);
   files.push_back("report.json");
   std::sort(files.begin(), files.end());
-  content["report.json"] = viz_report_json(r, files).dump(2) + "\n";
+  content["report.json"] = report_json_text(viz_report_json(r, files));
   write_files_atomically(dir, content);
   return files;
 }

@@ -37,6 +37,19 @@ TEST(ExchangeReal, ShortestRoundTripWithDecimalPoint) {
   }
 }
 
+// IGES carries ASCII only: names from the user's files fold to their base letters, anything else
+// (and bytes that are not UTF-8) to '_'.
+TEST(ExchangeText, AsciiFoldsLatinLettersAndReplacesTheRest) {
+  EXPECT_EQ(ascii_text("polarform 0.1.0 cam rôle"), "polarform 0.1.0 cam role");
+  EXPECT_EQ(ascii_text("tête mesure_é Łódź Straße Æsir œuvre"),
+            "tete mesure_e Lodz Strasse AEsir oeuvre");
+  EXPECT_EQ(ascii_text("ÀÿĀſ"), "AyAs");                // the ends of both tables
+  EXPECT_EQ(ascii_text("θ = 30° ≤ π"), "_ = 30_ _ _");  // Greek, signs: no ASCII letter
+  EXPECT_EQ(ascii_text("tab\there"), "tab_here");
+  EXPECT_EQ(ascii_text("latin-1 \xE9t\xE9 \xC3"), "latin-1 _t_ _");  // not UTF-8
+  EXPECT_EQ(ascii_text("emoji \xF0\x9F\x99\x82!"), "emoji _!");
+}
+
 // SOURCE_DATE_EPOCH (reproducible-builds.org) fixes the files' time stamps; a malformed value is
 // bad input naming the variable; without it the stamp is the current time.
 TEST(ExchangeTimeStamp, SourceDateEpochFixesTheStamp) {
