@@ -118,7 +118,9 @@ double CamProgram::operator()(double theta) const {
 }
 
 Kinematics CamProgram::kinematics(double theta, double rpm) const {
-  if (!(rpm > 0) || !std::isfinite(rpm)) throw InputError("cam program: rpm must be positive, got " + number_text(rpm));
+  if (!(rpm > 0) || !(rpm <= kMaxRpm))
+    throw InputError("cam program: rpm " + number_text(rpm) + ", expected in (0, " +
+                     number_text(kMaxRpm) + "]");
   const double omega = kTwoPi * rpm / 60.0;  // rad/s
   double s[4];
   derivatives(theta, 3, s);

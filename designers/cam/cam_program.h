@@ -17,6 +17,10 @@ namespace polarform {
 // θ reduced to [0, 2π).
 double wrap_angle(double theta);
 
+// The fastest cam speed accepted, rev/min: above any machine cam, and far below the speeds at
+// which the jerk s‴·ω³ overflows (input limit).
+constexpr double kMaxRpm = 1e5;
+
 // Follower motion at constant cam speed ω = 2π·rpm/60: mm, mm/s, mm/s², mm/s³.
 struct Kinematics {
   double displacement = 0.0;

@@ -31,6 +31,9 @@ void validate(std::span<const double> start, std::span<const double> end, const 
   if (s.degree < std::max(k, 1) || s.degree > kMaxDegree)
     fail("degree " + std::to_string(s.degree) + " outside [" + std::to_string(std::max(k, 1)) + ", " +
          std::to_string(kMaxDegree) + "]");
+  if (s.control_values > kMaxBSplineControlValues)
+    fail("control_values " + std::to_string(s.control_values) + " above the limit " +
+         std::to_string(kMaxBSplineControlValues));
   if (s.control_values < std::max(s.degree + 1, conditions))
     fail("control_values " + std::to_string(s.control_values) + " below max(degree + 1, " +
          std::to_string(conditions) + " endpoint conditions) = " + std::to_string(std::max(s.degree + 1, conditions)));

@@ -11,6 +11,10 @@
 
 namespace polarform {
 
+// The most control values a B-spline law may have: its dense constrained least squares stays well
+// under a second and a few MB (input limit, checked before any allocation).
+constexpr int kMaxBSplineControlValues = 500;
+
 struct BSplineLawSettings {
   int degree = 5;
   int control_values = 10;

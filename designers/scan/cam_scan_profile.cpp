@@ -3,11 +3,14 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <sstream>
 #include <vector>
 
 #include "designers/scan/cloud_plane.h"
 #include "src/error.h"
+#include "src/number_text.h"
+#include "src/units.h"
 
 namespace polarform {
 
@@ -97,6 +100,17 @@ std::string vector_text(const Eigen::Vector3d& v) {
   s.precision(6);
   s << "(" << v.x() << ", " << v.y() << ", " << v.z() << ")";
   return s.str();
+}
+
+// The widest empty sector of the points' polar angles about the origin, in radians.
+double largest_angular_gap(const Eigen::Matrix2Xd& points) {
+  std::vector<double> angle(static_cast<std::size_t>(points.cols()));
+  for (Eigen::Index c = 0; c < points.cols(); ++c)
+    angle[static_cast<std::size_t>(c)] = std::atan2(points(1, c), points(0, c));
+  std::sort(angle.begin(), angle.end());
+  double gap = angle.front() + 2 * std::numbers::pi - angle.back();
+  for (std::size_t i = 0; i + 1 < angle.size(); ++i) gap = std::max(gap, angle[i + 1] - angle[i]);
+  return gap;
 }
 
 }  // namespace
@@ -215,6 +229,14 @@ CamProfile extract_cam_profile(const Eigen::Matrix3Xd& points, const CamProfileO
   if (p.contour.cols() < 16)
     throw InputError("cam scan: " + std::to_string(p.contour.cols()) +
                      " contour points, expected at least 16");
+  const double gap = largest_angular_gap(p.contour);
+  if (gap > kMaxContourGap)
+    throw InputError("cam scan: the contour does not surround the centre of rotation " +
+                     vector_text(p.plane.origin) +
+                     ": seen from it, the contour points leave a gap of " +
+                     number_text(gap * kDegreesPerRadian) + "° (at most " +
+                     number_text(kMaxContourGap * kDegreesPerRadian) +
+                     "°); a plate cam's contour goes round its axis — check --center");
   return p;
 }
 

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <numbers>
 #include <optional>
 #include <string>
 
@@ -14,6 +15,10 @@
 #include "src/fit/local_frame.h"
 
 namespace polarform {
+
+// The widest sector about the centre of rotation that the contour may leave empty: a plate cam's
+// contour goes round its axis, and a centre outside it (a mistyped --center) leaves a wide one.
+constexpr double kMaxContourGap = std::numbers::pi / 2;
 
 struct CamProfileOptions {
   std::optional<Eigen::Vector3d> axis;    // the cam's axis; estimated when absent
@@ -34,8 +39,9 @@ struct CamProfile {
   std::string axis_reason, centre_reason;
 };
 
-// Throws InputError for fewer than 16 points, non-finite points, a 3D scan without two faces, or
-// no centre (none given and no bore found), naming what was expected.
+// Throws InputError for fewer than 16 points, non-finite points, a 3D scan without two faces,
+// no centre (none given and no bore found), or a contour that leaves a sector wider than
+// kMaxContourGap about the centre, naming what was expected.
 CamProfile extract_cam_profile(const Eigen::Matrix3Xd& points,
                                const CamProfileOptions& options = {});
 

@@ -73,6 +73,9 @@ void validate(const SynthesisProblem& problem) {
     throw InputError("synthesis: length unit " + to_text(problem.length_unit) + " mm, expected > 0");
   if (problem.targets.empty())
     throw InputError("synthesis: no curvature targets, expected at least one (θ, κ)");
+  if (problem.targets.size() > kMaxCurvatureTargets)
+    throw InputError("synthesis: " + std::to_string(problem.targets.size()) +
+                     " curvature targets, above the limit " + std::to_string(kMaxCurvatureTargets));
   for (std::size_t k = 0; k < problem.targets.size(); ++k) {
     const CurvatureTarget& t = problem.targets[k];
     const std::string which = "synthesis: curvature target " + std::to_string(k + 1);

@@ -133,8 +133,10 @@ HeadShape head_shape(const HeadPreset& preset, double radius) {
 }
 
 std::vector<CurvatureTarget> preset_targets(const HeadShape& shape, int count) {
-  if (count < 1)
-    throw InputError("head preset: " + std::to_string(count) + " curvature targets, expected >= 1");
+  if (count < 1 || count > kMaxCurvatureTargets)
+    throw InputError("head preset: " + std::to_string(count) +
+                     " curvature targets, expected in [1, " + std::to_string(kMaxCurvatureTargets) +
+                     "]");
   std::vector<CurvatureTarget> targets;
   for (int k = 0; k < count; ++k) {
     const double theta = (k + 0.5) * kPi / count;

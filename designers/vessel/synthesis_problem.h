@@ -28,6 +28,12 @@ struct EndCondition {
   bool operator==(const EndCondition&) const = default;
 };
 
+// Input limits, checked before any allocation: the dense synthesis (targets x ordinates matrices,
+// an NLopt run of max_iterations evaluations) stays within seconds and tens of MB at the limits.
+constexpr int kMaxOrdinates = 400;
+constexpr int kMaxSynthesisIterations = 10000;
+constexpr int kMaxCurvatureTargets = 20000;
+
 struct SynthesisSettings {
   int degree = 5;       // of R(θ); >= 3 so that ∫(R''')² dθ is defined
   int ordinates = 20;   // control values; uniform clamped knots on [0, π]

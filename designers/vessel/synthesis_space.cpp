@@ -35,14 +35,15 @@ SynthesisSpace synthesis_space(const SynthesisSettings& s) {
   if (s.degree < 3 || s.degree > kMaxDegree)
     throw InputError("synthesis: degree " + std::to_string(s.degree) + " outside [3, " +
                      std::to_string(kMaxDegree) + "] (∫(R''')² dθ needs degree >= 3)");
-  if (s.ordinates < s.degree + 1)
+  if (s.ordinates < s.degree + 1 || s.ordinates > kMaxOrdinates)
     throw InputError("synthesis: ordinates " + std::to_string(s.ordinates) +
-                     ", expected >= degree + 1 = " + std::to_string(s.degree + 1));
+                     ", expected in [degree + 1 = " + std::to_string(s.degree + 1) + ", " +
+                     std::to_string(kMaxOrdinates) + "]");
   if (!(s.smoothing >= 0.0 && std::isfinite(s.smoothing)))
     throw InputError("synthesis: smoothing " + to_text(s.smoothing) + ", expected a finite λ >= 0");
-  if (s.max_iterations < 1)
+  if (s.max_iterations < 1 || s.max_iterations > kMaxSynthesisIterations)
     throw InputError("synthesis: max_iterations " + std::to_string(s.max_iterations) +
-                     ", expected >= 1");
+                     ", expected in [1, " + std::to_string(kMaxSynthesisIterations) + "]");
 
   SynthesisSpace space;
   space.degree = s.degree;

@@ -38,6 +38,7 @@ std::string plane_text(const CloudPlane& p) {
 }
 
 RotationalFitOptions rotational_options(const FitJobOptions& o) {
+  if (o.ctrl) check_control_net_size(o.ctrl->first, o.ctrl->second, "--ctrl");
   RotationalFitOptions ro;
   ro.spherical.function = ro.cylindrical.function = function_options(o);
   ro.spherical.frame.origin = ro.cylindrical.frame.origin = o.center;
@@ -59,7 +60,9 @@ void check_options(const FitJobOptions& o) {
 
 // The plane the method choice looks at: with --method polar an axis is the plane's normal.
 CloudPlane choice_plane(const FitInput& in, const FitJobOptions& o) {
-  return fit_plane(in.points, o.method == FitJobMethod::polar ? o.axis : std::nullopt);
+  return naming_input(in.file.string(), [&] {
+    return fit_plane(in.points, o.method == FitJobMethod::polar ? o.axis : std::nullopt);
+  });
 }
 
 // Whether the polar method runs: asked for (the points must then be planar), or automatic on a
@@ -143,11 +146,13 @@ FitJobResult fit_cloud(FitInput in, const FitJobOptions& o) {
   CloudPlane plane = choice_plane(in, o);
   const bool polar = runs_polar(in, plane, o);
   // Automatic on a planar cloud: a given axis is the profile plane's normal.
-  if (polar && o.method == FitJobMethod::automatic && o.axis) plane = fit_plane(in.points, o.axis);
-  std::variant<ProfileFit, RotationalFit> fit =
-      polar ? std::variant<ProfileFit, RotationalFit>(fit_profile(in, plane, o))
-            : std::variant<ProfileFit, RotationalFit>(
-                  fit_rotational(in.points, rotational_options(o)));
+  if (polar && o.method == FitJobMethod::automatic && o.axis)
+    plane = naming_input(in.file.string(), [&] { return fit_plane(in.points, o.axis); });
+  const RotationalFitOptions rotational = polar ? RotationalFitOptions{} : rotational_options(o);
+  std::variant<ProfileFit, RotationalFit> fit = naming_input(in.file.string(), [&] {
+    return polar ? std::variant<ProfileFit, RotationalFit>(fit_profile(in, plane, o))
+                 : std::variant<ProfileFit, RotationalFit>(fit_rotational(in.points, rotational));
+  });
   std::string method, reason;
   if (const auto* p = std::get_if<ProfileFit>(&fit)) {
     method = "polar";

@@ -93,6 +93,9 @@ SegmentSpec read_segment(const XmlElementReader& r, double from, double level,
   if (s.law == MotionLaw::BSpline) {
     s.bspline.degree = r.integer("degree", s.bspline.degree);
     s.bspline.control_values = r.integer("control-values", s.bspline.control_values);
+    if (s.bspline.control_values < 1 || s.bspline.control_values > kMaxBSplineControlValues)
+      r.fail("control-values",
+             "an integer in [1, " + std::to_string(kMaxBSplineControlValues) + "]");
     s.bspline.minimised_derivative = r.integer("minimise", s.bspline.minimised_derivative);
   }
   return s;
@@ -112,6 +115,7 @@ CamDesign read_cam(const XmlElementReader& r, const std::string& file,
   d.rotation = r.choice("rotation", {"ccw", "cw"}, "ccw") == "ccw" ? Rotation::CounterClockwise
                                                                     : Rotation::Clockwise;
   d.rpm = r.positive("rpm", 300.0);
+  if (!(d.rpm <= kMaxRpm)) r.fail("rpm", "a speed in (0, " + number_text(kMaxRpm) + "] rev/min");
   if (d.type == CamType::Plate) {
     d.base_radius = r.positive("base-radius");
   } else {

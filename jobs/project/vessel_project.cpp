@@ -78,7 +78,9 @@ HeadPreset read_head(const XmlElementReader& r, double radius, int& targets) {
       r.fail("crown", "a crown radius at least the vessel radius " + number(radius) + " mm");
   }
   targets = r.integer("targets", targets);
-  if (targets < 1) r.fail("targets", "a number of curvature targets >= 1");
+  if (targets < 1 || targets > kMaxCurvatureTargets)
+    r.fail("targets",
+           "a number of curvature targets in [1, " + std::to_string(kMaxCurvatureTargets) + "]");
   return h;
 }
 
@@ -88,12 +90,14 @@ SynthesisSettings read_synthesis(const XmlElementReader& r) {
   if (s.degree < 3 || s.degree > kMaxDegree)
     r.fail("degree", "an integer in [3, " + std::to_string(kMaxDegree) + "]");
   s.ordinates = r.integer("ordinates", s.ordinates);
-  if (s.ordinates < s.degree + 1)
-    r.fail("ordinates", "an integer >= degree + 1 = " + std::to_string(s.degree + 1));
+  if (s.ordinates < s.degree + 1 || s.ordinates > kMaxOrdinates)
+    r.fail("ordinates", "an integer in [degree + 1 = " + std::to_string(s.degree + 1) + ", " +
+                            std::to_string(kMaxOrdinates) + "]");
   s.smoothing = r.positive("smoothing", s.smoothing, true);
   s.symmetric = r.choice("symmetric", {"true", "false"}, s.symmetric ? "true" : "false") == "true";
   s.max_iterations = r.integer("max-iterations", s.max_iterations);
-  if (s.max_iterations < 1) r.fail("max-iterations", "an integer >= 1");
+  if (s.max_iterations < 1 || s.max_iterations > kMaxSynthesisIterations)
+    r.fail("max-iterations", "an integer in [1, " + std::to_string(kMaxSynthesisIterations) + "]");
   return s;
 }
 
@@ -104,7 +108,12 @@ void read_vessel(const XMLElement* e, Reader& reader, VesselProject& p) {
     d.length = r.positive("length");
     d.thickness = r.positive("thickness");
     d.pressure = r.positive("pressure");
-    for (const XMLElement* c : r.children("curvature"))
+    const std::vector<const XMLElement*> curvatures = r.children("curvature");
+    if (curvatures.size() > kMaxCurvatureTargets)
+      throw InputError(r.where() + ": " + std::to_string(curvatures.size()) +
+                       " <curvature> elements, above the limit " +
+                       std::to_string(kMaxCurvatureTargets));
+    for (const XMLElement* c : curvatures)
       reader.visit(c, [&](const XmlElementReader& cr) { p.curvatures.push_back(read_curvature(cr)); });
     for (const XMLElement* c : r.children("end"))
       reader.visit(c, [&](const XmlElementReader& er) {

@@ -47,9 +47,10 @@ ScanCamJobResult run_scan_cam_job(const std::filesystem::path& scan, const ScanC
   r.points = static_cast<std::size_t>(cloud.points.cols());
   r.dropped = cloud.dropped;
   r.read_seconds = clock.lap();
-  r.scan = analyse_scanned_cam(cloud.points, so);
+  r.scan = naming_input(scan.string(), [&] { return analyse_scanned_cam(cloud.points, so); });
   if (r.nominal) {
-    r.comparison = compare_to_nominal(r.scan, *r.nominal);
+    r.comparison =
+        naming_input(scan.string(), [&] { return compare_to_nominal(r.scan, *r.nominal); });
     r.tolerance = o.tolerance;
     if (o.tolerance) r.within_tolerance = r.comparison->normal_stats.max <= *o.tolerance;
   }

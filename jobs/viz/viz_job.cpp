@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "src/error.h"
+#include "src/fit/function_fit.h"
 #include "src/fit/stage_times.h"
 
 namespace polarform {
@@ -38,14 +39,17 @@ VizJobResult run_viz_job(ScalarGrid grid, const std::string& name, const VizJobO
   r.offset_reason = why.str();
   ScalarFieldOptions so;
   if (o.degree) so.function.degree_u = o.degree->first, so.function.degree_v = o.degree->second;
+  if (o.ctrl) check_control_net_size(o.ctrl->first, o.ctrl->second, "--ctrl");
   if (o.ctrl) so.function.size_u = o.ctrl->first, so.function.size_v = o.ctrl->second;
   so.function.threads = o.threads;
   so.scale = r.scale;
   so.offset = r.offset;
   so.closure = o.closure;
-  r.field = r.grid.setup == GridSetup::spherical
-                ? visualize_spherical(r.grid.value, r.grid.phi, r.grid.theta, so)
-                : visualize_cylindrical(r.grid.value, r.grid.theta, r.grid.z, so);
+  r.field = naming_input(name, [&] {
+    return r.grid.setup == GridSetup::spherical
+               ? visualize_spherical(r.grid.value, r.grid.phi, r.grid.theta, so)
+               : visualize_cylindrical(r.grid.value, r.grid.theta, r.grid.z, so);
+  });
   r.seconds = clock.lap();
   return r;
 }

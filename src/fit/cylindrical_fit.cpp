@@ -45,6 +45,7 @@ CylindricalFit fit_cylindrical(const Eigen::Matrix3Xd& points, const Cylindrical
           << "general (parametric) surface fitter";
       throw InputError(msg.str());
     }
+    require_thin_data(check, "cylindrical fit");
   }
   times.check = clock.lap();
   progress(0.15);

@@ -40,6 +40,18 @@ double statistic(const ErrorStats& s, ToleranceMeasure m) {
   return s.max;
 }
 
+}  // namespace
+
+void check_control_net_size(int size_u, int size_v, const std::string& what) {
+  const long coefficients = long(size_u) * size_v;
+  if (coefficients > kMaxFitCoefficients)
+    throw InputError(what + " " + std::to_string(size_u) + " x " + std::to_string(size_v) + ": " +
+                     std::to_string(coefficients) + " coefficients, above the limit of " +
+                     std::to_string(kMaxFitCoefficients) + " (e.g. 256 x 256)");
+}
+
+namespace {
+
 void check_options(const FunctionFitOptions& o, const FunctionSpace& sp) {
   auto fail = [](const std::string& m) { throw InputError("function fit: " + m); };
   for (int d : {o.degree_u, o.degree_v})
@@ -49,6 +61,7 @@ void check_options(const FunctionFitOptions& o, const FunctionSpace& sp) {
   if (!(o.tolerance >= 0.0) || !std::isfinite(o.tolerance))
     fail("tolerance " + std::to_string(o.tolerance) + ", expected a finite value >= 0");
   if (o.size_u < 0 || o.size_v < 0) fail("control net size must be >= 0");
+  check_control_net_size(o.size_u, o.size_v, "function fit: control net");
   if (!(o.constant_tolerance >= 0.0)) fail("constant_tolerance must be >= 0");
   if (sp.symmetric_v && !sp.periodic_v) fail("symmetric_v needs periodic_v");
   if (sp.pole_start < 0 || sp.pole_start > 2 || sp.pole_end < 0 || sp.pole_end > 2)

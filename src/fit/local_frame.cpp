@@ -169,6 +169,24 @@ LocalCloud local_cloud(const Eigen::Matrix3Xd& points, FrameOptions options, int
     throw InputError(fit_name + ": " + std::to_string(points.cols()) +
                      " points, expected at least 16");
   if (!points.allFinite()) throw InputError(fit_name + ": a point is not finite");
+  // A surface about an axis or a centre needs points that span more than a line: the spread
+  // across the principal direction against the spread along it (square roots of the
+  // covariance's eigenvalues).
+  const Eigen::Matrix3Xd centred = points.colwise() - points.rowwise().mean();
+  const Eigen::Vector3d spread =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(centred * centred.transpose() / points.cols(),
+                                                     Eigen::EigenvaluesOnly)
+          .eigenvalues()
+          .cwiseMax(0.0)
+          .cwiseSqrt();
+  if (!(spread(2) > 0.0)) throw InputError(fit_name + ": all points coincide");
+  if (!(spread(1) > 1e-6 * spread(2))) {
+    std::ostringstream msg;
+    msg.precision(4);
+    msg << fit_name << ": the points lie on a straight line (spread " << spread(1)
+        << " mm across it, " << spread(2) << " mm along it): no surface about an axis or a centre";
+    throw InputError(msg.str());
+  }
   options.quadric.threads = threads;
   LocalCloud out{estimate_frame(points, options), {}};
   out.points = out.frame.frame.to_local(points);

@@ -63,6 +63,7 @@ PolarCurveFit fit_polar_curve(const Eigen::Matrix2Xd& points, const PolarFitOpti
           << ". Choose another centre, split the data, or use a general (parametric) fitter";
       throw InputError(msg.str());
     }
+    require_thin_data(check, "polar curve fit");
   }
   times.check = clock.lap();
 

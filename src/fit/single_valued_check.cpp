@@ -7,6 +7,8 @@
 #include <numeric>
 #include <sstream>
 
+#include "src/error.h"
+
 namespace polarform {
 
 namespace {
@@ -240,7 +242,8 @@ SingleValuedness check_single_valued(const Eigen::VectorXd& s, const Eigen::Vect
   out.noise = 1.4826 * all[all.size() / 2];
   std::vector<double> radii(r.data(), r.data() + r.size());
   std::nth_element(radii.begin(), radii.begin() + radii.size() / 2, radii.end());
-  out.threshold = std::max(8.0 * out.noise, 1e-4 * std::abs(radii[radii.size() / 2]));
+  out.typical_radius = std::abs(radii[radii.size() / 2]);
+  out.threshold = std::max(8.0 * out.noise, 1e-4 * out.typical_radius);
 
   std::vector<CellFold> fold(static_cast<std::size_t>(cells));
   for (int c = 0; c < cells; ++c)
@@ -280,6 +283,17 @@ SingleValuedness check_single_valued(const Eigen::VectorXd& s, const Eigen::Vect
   }
   out.single_valued = out.folds.empty();
   return out;
+}
+
+void require_thin_data(const SingleValuedness& check, const std::string& fit) {
+  if (check.noise <= kMaxRelativeScatter * check.typical_radius) return;
+  std::ostringstream o;
+  o.precision(4);
+  o << fit << ": the points fill a region instead of lying on one curve or surface about the "
+    << "centre: their radii scatter by σ = " << check.noise << " about any smooth r = F, "
+    << 100 * check.noise / check.typical_radius << " % of the typical radius "
+    << check.typical_radius << " (at most " << 100 * kMaxRelativeScatter << " %)";
+  throw InputError(o.str());
 }
 
 std::string describe_folds(const SingleValuedness& check, const std::string& s_name, double s_unit,

@@ -24,6 +24,7 @@ struct FoldRegion {
 struct SingleValuedness {
   bool single_valued = true;
   double noise = 0.0;      // robust σ of the detrended radii within their branch
+  double typical_radius = 0.0;  // the median radius
   double threshold = 0.0;  // branch separation counted as a fold
   std::vector<FoldRegion> folds;
 };
@@ -32,6 +33,14 @@ struct SingleValuedness {
 // coordinates should be comparably scaled (angles, or height and r̄·θ).
 SingleValuedness check_single_valued(const Eigen::VectorXd& s, const Eigen::VectorXd& t,
                                      const Eigen::VectorXd& r, int threads = 1);
+
+// The largest scatter of the detrended radii, as a fraction of the typical radius, of data that
+// lies on a curve or surface r = F: more is a filled region (a disc, a solid), not a profile.
+constexpr double kMaxRelativeScatter = 0.05;
+
+// Throws InputError "<fit>: the points fill a region …" when check.noise exceeds
+// kMaxRelativeScatter · check.typical_radius.
+void require_thin_data(const SingleValuedness& check, const std::string& fit);
 
 // "[a, b]" lists of the fold regions, the first coordinate scaled by s_unit (e.g. 180/π for
 // degrees) and labelled s_name; the second likewise when present.

@@ -79,6 +79,7 @@ SphericalFit fit_spherical(const Eigen::Matrix3Xd& points, const SphericalFitOpt
           << "(parametric) surface fitter";
       throw InputError(msg.str());
     }
+    require_thin_data(check, "spherical fit");
   }
   times.check = clock.lap();
   progress(0.15);

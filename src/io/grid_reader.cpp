@@ -1,5 +1,6 @@
 #include "src/io/grid_reader.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "src/error.h"
+#include "src/number_text.h"
 #include "src/units.h"
 
 namespace polarform {
@@ -110,6 +112,15 @@ ScalarGrid parse_scalar_grid(std::string_view text, const std::string& name) {
   if (rows[0].size() < 16)
     throw InputError(name + ": " + std::to_string(rows[0].size()) +
                      " data rows, expected at least 16");
+  // A surface over the grid needs a range in both coordinates: one meridian or one ring is not one.
+  const bool sph = g.setup == GridSetup::spherical;
+  const char* coordinate[3] = {"", sph ? "phi_deg" : "theta_deg", sph ? "theta_deg" : "z_mm"};
+  for (int c = 1; c < 3; ++c) {
+    const auto [lo, hi] = std::minmax_element(rows[c].begin(), rows[c].end());
+    if (*lo == *hi)
+      throw InputError(name + ": every row has " + coordinate[c] + " = " + number_text(*lo) +
+                       "; a surface needs at least two distinct " + coordinate[c] + " values");
+  }
   const auto vec = [](const std::vector<double>& v, double scale) {
     return Eigen::VectorXd(
         Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size())) * scale);

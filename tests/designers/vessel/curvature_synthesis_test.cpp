@@ -211,7 +211,19 @@ TEST(CurvatureSynthesis, BadInput) {
   problem.settings.degree = 5;
   problem.settings.ordinates = 5;
   EXPECT_EQ(error_of([&] { synthesize_profile(problem); }),
-            "synthesis: ordinates 5, expected >= degree + 1 = 6");
+            "synthesis: ordinates 5, expected in [degree + 1 = 6, 400]");
+  // Limits checked before anything the size of the input is allocated.
+  problem.settings.ordinates = 1000000;
+  EXPECT_EQ(error_of([&] { synthesize_profile(problem); }),
+            "synthesis: ordinates 1000000, expected in [degree + 1 = 6, 400]");
+  problem.settings.ordinates = 20;
+  problem.settings.max_iterations = 1000000000;
+  EXPECT_EQ(error_of([&] { synthesize_profile(problem); }),
+            "synthesis: max_iterations 1000000000, expected in [1, 10000]");
+  problem.settings.max_iterations = 500;
+  problem.targets.assign(kMaxCurvatureTargets + 1, {1.0, 0.002, 1.0});
+  EXPECT_EQ(error_of([&] { synthesize_profile(problem); }),
+            "synthesis: 20001 curvature targets, above the limit 20000");
 }
 
 }  // namespace

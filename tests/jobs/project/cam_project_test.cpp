@@ -115,18 +115,22 @@ TEST(CamProject, BrokenFilesGiveSpecificErrors) {
        "cam.xml:3: <segment> attribute 'law': expected a motion law (unknown motion law "
        "'parabolic'; expected one of: harmonic, cycloidal, modified-trapezoid, modified-sine, "
        "3-4-5, 4-5-6-7, polynomial, bspline), got 'parabolic'"},
-      {cam(kPlate, "<segment kind=\"rise\" law=\"cycloidal\" lift=\"20\" to=\"180\"/>\n"
-                   "<segment kind=\"return\" law=\"cycloidal\" to=\"300\"/>\n"),
+      {cam(kPlate,
+           "<segment kind=\"rise\" law=\"cycloidal\" lift=\"20\" to=\"180\"/>\n"
+           "<segment kind=\"return\" law=\"cycloidal\" to=\"300\"/>\n"),
        "cam.xml:2: <cam>: the segments end at 300°; they must cover 0° to 360°"},
-      {cam(kPlate, "<segment kind=\"rise\" law=\"cycloidal\" lift=\"20\" to=\"180\"/>\n"
-                   "<segment kind=\"return\" law=\"cycloidal\" from=\"170\" to=\"360\"/>\n"),
+      {cam(kPlate,
+           "<segment kind=\"rise\" law=\"cycloidal\" lift=\"20\" to=\"180\"/>\n"
+           "<segment kind=\"return\" law=\"cycloidal\" from=\"170\" to=\"360\"/>\n"),
        "cam.xml:4: <segment>: segment starts at 170° but the previous one ends at 180° (an "
        "overlap)"},
-      {cam(kPlate, "<segment kind=\"rise\" law=\"cycloidal\" lift=\"20\" to=\"180\"/>\n"
-                   "<segment kind=\"return\" law=\"cycloidal\" from=\"190\" to=\"360\"/>\n"),
+      {cam(kPlate,
+           "<segment kind=\"rise\" law=\"cycloidal\" lift=\"20\" to=\"180\"/>\n"
+           "<segment kind=\"return\" law=\"cycloidal\" from=\"190\" to=\"360\"/>\n"),
        "cam.xml:4: <segment>: segment starts at 190° but the previous one ends at 180° (a gap)"},
-      {cam(kPlate, "<segment kind=\"rise\" law=\"cycloidal\" lift=\"20\" to=\"180\"/>\n"
-                   "<segment kind=\"dwell\" to=\"120\"/>\n"),
+      {cam(kPlate,
+           "<segment kind=\"rise\" law=\"cycloidal\" lift=\"20\" to=\"180\"/>\n"
+           "<segment kind=\"dwell\" to=\"120\"/>\n"),
        "cam.xml:4: <segment> attribute 'to': expected an angle after the segment start 180°, got "
        "'120'"},
       {cam(kPlate, "<segment kind=\"lift\" to=\"360\"/>\n"),
@@ -144,6 +148,14 @@ TEST(CamProject, BrokenFilesGiveSpecificErrors) {
       {cam(kPlate, "<segment kind=\"return\" law=\"cycloidal\" to=\"360\"/>\n"),
        "cam.xml:3: <segment> attribute 'lift': expected a lift > 0 mm (the follower is already at "
        "the base circle)"},
+      // Sizes and speeds are limited before anything is allocated or overflows.
+      {cam(kPlate,
+           "<segment kind=\"rise\" law=\"bspline\" lift=\"20\" to=\"180\" "
+           "control-values=\"1000000000\"/>\n"),
+       "cam.xml:3: <segment> attribute 'control-values': expected an integer in [1, 500], got "
+       "'1000000000'"},
+      {cam("follower=\"roller\" base-radius=\"40\" roller-radius=\"10\" rpm=\"1e300\"", kSegments),
+       "cam.xml:2: <cam> attribute 'rpm': expected a speed in (0, 100000] rev/min, got '1e300'"},
   };
   for (const auto& [xml, expected] : cases) EXPECT_EQ(error_of(xml), expected) << xml;
 }

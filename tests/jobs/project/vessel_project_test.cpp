@@ -123,11 +123,13 @@ TEST(VesselProject, BadValuesNameFileLineAndAttribute) {
       {vessel(kVessel, "<curvature theta=\"200\" kappa=\"0.002\"/>\n"),
        "t.xml:3: <curvature> attribute 'theta': expected an angle in [0, 180] degrees, got '200'"},
       {vessel(kVessel, "<curvature theta=\"20\" kappa=\"0.002\" radius=\"500\"/>\n"),
-       "t.xml:3: <curvature> attribute 'radius': expected either kappa or radius, not both, got '500'"},
+       "t.xml:3: <curvature> attribute 'radius': expected either kappa or radius, not both, got "
+       "'500'"},
       {vessel(kVessel, "<curvature theta=\"20\"/>\n"),
        "t.xml:3: <curvature> attribute 'kappa': expected a number (attribute is missing)"},
       {vessel(kVessel, "<curvature theta=\"20\" radius=\"0\"/>\n"),
-       "t.xml:3: <curvature> attribute 'radius': expected a non-zero radius of curvature in mm, got '0'"},
+       "t.xml:3: <curvature> attribute 'radius': expected a non-zero radius of curvature in mm, "
+       "got '0'"},
       {vessel(kVessel, "<curvature theta=\"20\" kappa=\"0.002\" weight=\"0\"/>\n"),
        "t.xml:3: <curvature> attribute 'weight': expected a number > 0, got '0'"},
       {vessel(kVessel, head + "<end at=\"C\"/>\n"),
@@ -137,17 +139,32 @@ TEST(VesselProject, BadValuesNameFileLineAndAttribute) {
       {vessel(kVessel, head + "<end at=\"B\" ddr=\"x\"/>\n"),
        "t.xml:4: <end> attribute 'ddr': expected a finite number, got 'x'"},
       {vessel(kVessel, "<head preset=\"torispherical\" crown=\"1000\" knuckle=\"600\"/>\n"),
-       "t.xml:3: <head> attribute 'knuckle': expected a knuckle radius below the vessel radius 500 mm, got '600'"},
+       "t.xml:3: <head> attribute 'knuckle': expected a knuckle radius below the vessel radius 500 "
+       "mm, got '600'"},
       {vessel(kVessel, "<head preset=\"torispherical\" crown=\"400\" knuckle=\"60\"/>\n"),
-       "t.xml:3: <head> attribute 'crown': expected a crown radius at least the vessel radius 500 mm, got '400'"},
+       "t.xml:3: <head> attribute 'crown': expected a crown radius at least the vessel radius 500 "
+       "mm, got '400'"},
       {vessel(kVessel, "<head preset=\"conical\"/>\n"),
-       "t.xml:3: <head> attribute 'preset': expected one of hemispherical|ellipsoidal|torispherical, got 'conical'"},
+       "t.xml:3: <head> attribute 'preset': expected one of "
+       "hemispherical|ellipsoidal|torispherical, got 'conical'"},
       {vessel(kVessel, "<head preset=\"hemispherical\" targets=\"0\"/>\n"),
-       "t.xml:3: <head> attribute 'targets': expected a number of curvature targets >= 1, got '0'"},
+       "t.xml:3: <head> attribute 'targets': expected a number of curvature targets in [1, 20000], "
+       "got '0'"},
+      // Sizes the user controls are limited before anything is allocated.
+      {vessel(kVessel, "<head preset=\"hemispherical\" targets=\"1000000000\"/>\n"),
+       "t.xml:3: <head> attribute 'targets': expected a number of curvature targets in [1, 20000], "
+       "got '1000000000'"},
+      {vessel(kVessel, head + "<synthesis ordinates=\"1000000\"/>\n"),
+       "t.xml:4: <synthesis> attribute 'ordinates': expected an integer in [degree + 1 = 6, 400], "
+       "got '1000000'"},
+      {vessel(kVessel, head + "<synthesis max-iterations=\"1000000000\"/>\n"),
+       "t.xml:4: <synthesis> attribute 'max-iterations': expected an integer in [1, 10000], got "
+       "'1000000000'"},
       {vessel(kVessel, head + "<synthesis degree=\"2\"/>\n"),
        "t.xml:4: <synthesis> attribute 'degree': expected an integer in [3, 40], got '2'"},
       {vessel(kVessel, head + "<synthesis ordinates=\"5\"/>\n"),
-       "t.xml:4: <synthesis> attribute 'ordinates': expected an integer >= degree + 1 = 6, got '5'"},
+       "t.xml:4: <synthesis> attribute 'ordinates': expected an integer in [degree + 1 = 6, 400], "
+       "got '5'"},
       {vessel(kVessel, head + "<synthesis symmetric=\"yes\"/>\n"),
        "t.xml:4: <synthesis> attribute 'symmetric': expected one of true|false, got 'yes'"},
       {vessel(kVessel, head + "<synthesis smoothing=\"-1\"/>\n"),

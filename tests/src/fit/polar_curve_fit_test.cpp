@@ -144,6 +144,36 @@ TEST(PolarCurveFit, RefusesDataThatRaysCrossTwice) {
   EXPECT_TRUE(check_single_valued(pb.theta, Eigen::VectorXd(), pb.r).single_valued);
 }
 
+// A filled disc has one branch everywhere, but no curve r = F(θ): its radii scatter over the whole
+// radius. It is refused, with the measured scatter; a ring as noisy as 2 % of its radius passes.
+TEST(PolarCurveFit, RefusesAFilledRegion) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  Eigen::Matrix2Xd disc(2, 3000);
+  for (Eigen::Index k = 0; k < disc.cols(); ++k) {
+    const double r = 10 * std::sqrt(U(rng)), t = 2 * kPi * U(rng);
+    disc.col(k) << r * std::cos(t), r * std::sin(t);
+  }
+  PolarFitOptions o;
+  o.centre = Eigen::Vector2d::Zero();
+  try {
+    fit_polar_curve(disc, o);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("polar curve fit: the points fill a region"), std::string::npos) << msg;
+  }
+  const PolarCoordinates pc = polar_coordinates(disc);
+  const SingleValuedness c = check_single_valued(pc.theta, Eigen::VectorXd(), pc.r);
+  EXPECT_GT(c.noise, 0.25 * c.typical_radius);  // uniform in area: σ of r near 0.24 R
+  EXPECT_NEAR(c.typical_radius, 10 * std::sqrt(0.5), 0.3);
+
+  const Eigen::Matrix2Xd ring =
+      polar_points([](double) { return 10.0; }, 3000, 0.0, 2 * kPi, {0, 0}, 0.2, 12);
+  const PolarCurveFit fit = fit_polar_curve(ring, o);
+  EXPECT_NEAR(fit.report.error.rms, 0.2, 0.03);
+}
+
 // A ring with a concentric bore: two branches over the whole circle. The noise must come from
 // within each branch, not from the distance between them.
 TEST(PolarCurveFit, ConcentricBranchesEverywhereAreAFold) {
