@@ -17,6 +17,9 @@ std::string describe(tinyxml2::XMLError error) {
     case tinyxml2::XML_ERROR_PARSING_ATTRIBUTE: return "cannot parse an attribute";
     case tinyxml2::XML_ERROR_EMPTY_DOCUMENT: return "the document is empty";
     case tinyxml2::XML_ERROR_FILE_COULD_NOT_BE_OPENED: return "cannot open the file";
+    case tinyxml2::XML_ELEMENT_DEPTH_EXCEEDED:
+      return "elements nested deeper than " + std::to_string(TINYXML2_MAX_ELEMENT_DEPTH) +
+             " levels";
     default: return tinyxml2::XMLDocument::ErrorIDToName(error);
   }
 }

@@ -71,5 +71,15 @@ TEST(XmlReader, MalformedDocuments) {
             "/nonexistent/x.xml: no such file");
 }
 
+// A nest 10^5 elements deep is refused at tinyxml2's depth limit, not by exhausting the stack.
+TEST(XmlReader, DeepNestsAreRefusedAtTheDepthLimit) {
+  std::string deep = "<polarform version=\"1\">\n";
+  for (int k = 0; k < 100000; ++k) deep += "<a>";
+  for (int k = 0; k < 100000; ++k) deep += "</a>";
+  deep += "</polarform>\n";
+  EXPECT_EQ(error_of([&] { XmlDocument(deep, "deep.xml"); }),
+            "deep.xml:2: malformed XML: elements nested deeper than 100 levels");
+}
+
 }  // namespace
 }  // namespace polarform

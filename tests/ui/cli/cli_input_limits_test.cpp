@@ -111,5 +111,32 @@ TEST(CliInputLimits, AMissingOrUnknownCommandListsTheCommands) {
   }
 }
 
+// An --out that is a file, or a folder that cannot be made (under /proc, which even root cannot
+// write), stops every command with exit 2 before anything is written; the file stays as it was.
+TEST(CliInputLimits, AnOutputThatIsAFileOrUnwritableLosesNothing) {
+  const ScratchDir scratch("cli_limits_out");
+  const fs::path vessels = fs::path(POLARFORM_SOURCE_DIR) / "examples" / "vessels";
+  const std::vector<std::vector<std::string>> commands = {
+      {"cam", (kExamples / "roller.xml").string()},
+      {"study", (kExamples / "roller.xml").string()},
+      {"vessel", (vessels / "hemispherical.xml").string()},
+      {"fit", (kScans / "vase.xyz").string()},
+      {"scan-cam", (kScans / "cam_profile.xyz").string()},
+      {"viz", (kScans / "sphere_grid.csv").string()}};
+  const fs::path file = scratch / "report.txt";
+  std::ofstream(file) << "an earlier file\n";
+  for (const auto& command : commands)
+    for (const fs::path& out : {file, file / "sub", fs::path("/proc/polarform_out")}) {
+      std::vector<std::string> args = command;
+      args.insert(args.end(), {"--out", out.string(), "-q"});
+      const CliRun run = run_cli(args, scratch);
+      EXPECT_EQ(run.status, 2) << command[0] << " " << out;
+      EXPECT_NE(run.err.find(out.string() + ": cannot create the output directory"),
+                std::string::npos)
+          << run.err;
+      EXPECT_EQ(slurp(file), "an earlier file\n");
+    }
+}
+
 }  // namespace
 }  // namespace polarform
