@@ -149,6 +149,8 @@ CamProfile extract_cam_profile(const Eigen::Matrix3Xd& points, const CamProfileO
     throw InputError("cam scan: " + std::to_string(points.cols()) +
                      " points, expected at least 16");
   if (!points.allFinite()) throw InputError("cam scan: a point is not finite");
+  if (!((points.colwise() - points.col(0)).cwiseAbs().maxCoeff() > 0))
+    throw InputError("cam scan: all points coincide");
   CamProfile p;
   const CloudPlane cloud = fit_plane(points, o.axis);
   p.three_d = !cloud.planar();
@@ -164,6 +166,13 @@ CamProfile extract_cam_profile(const Eigen::Matrix3Xd& points, const CamProfileO
     p.thickness = (f.top_mean - f.bottom_mean).dot(k);
     p.face_flatness = face_flatness(x, f, k);
     p.face_points = f.bottom.size() + f.top.size();
+    const double size = x.colwise().norm().maxCoeff();
+    if (!(p.face_flatness <= kMaxFaceFlatness * size))
+      throw InputError("cam scan: a 3D scan whose faces are not flat (" +
+                       number_text(p.face_flatness) + " mm rms from their planes, " +
+                       number_text(100 * p.face_flatness / size) + " % of the scan's radius " +
+                       number_text(size) + " mm, at most " + number_text(100 * kMaxFaceFlatness) +
+                       " %): not a plate cam; a 2D profile scan needs no faces");
     const double mid = 0.5 * (f.top_mean + f.bottom_mean).dot(k);
     for (Eigen::Index c = 0; c < x.cols(); ++c)
       if (std::abs(x.col(c).dot(k) - mid) <= std::abs(p.thickness) / 4) slice.push_back(c);

@@ -20,6 +20,11 @@ namespace polarform {
 // contour goes round its axis, and a centre outside it (a mistyped --center) leaves a wide one.
 constexpr double kMaxContourGap = std::numbers::pi / 2;
 
+// The largest rms distance of a 3D scan's face points from their planes, as a fraction of the
+// scan's radius (largest distance from its centroid): a plate cam has two flat faces (scanner
+// noise: ~0.1 %), a sphere or a blob has none (a sphere's caps: 6 %).
+constexpr double kMaxFaceFlatness = 0.01;
+
 struct CamProfileOptions {
   std::optional<Eigen::Vector3d> axis;    // the cam's axis; estimated when absent
   std::optional<Eigen::Vector3d> centre;  // a point on the axis; the bore's centre when absent
@@ -39,7 +44,8 @@ struct CamProfile {
   std::string axis_reason, centre_reason;
 };
 
-// Throws InputError for fewer than 16 points, non-finite points, a 3D scan without two faces,
+// Throws InputError for fewer than 16 points, non-finite or coincident points, a 3D scan without
+// two flat faces (kMaxFaceFlatness),
 // no centre (none given and no bore found), or a contour that leaves a sector wider than
 // kMaxContourGap about the centre, naming what was expected.
 CamProfile extract_cam_profile(const Eigen::Matrix3Xd& points,

@@ -43,7 +43,7 @@ TEST(CliInputLimits, DegenerateCloudsAreRefusedNamingTheFile) {
   const ScratchDir scratch("cli_limits_degenerate");
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> U(0.0, 1.0);
-  std::string identical, collinear, disc;
+  std::string identical, collinear, disc, sphere;
   for (int k = 0; k < 100; ++k) {
     identical += "1 2 3\n";
     collinear +=
@@ -53,7 +53,13 @@ TEST(CliInputLimits, DegenerateCloudsAreRefusedNamingTheFile) {
     const double r = 10 * std::sqrt(U(rng)), t = 2 * std::numbers::pi * U(rng);
     disc += std::to_string(r * std::cos(t)) + " " + std::to_string(r * std::sin(t)) + " 0\n";
   }
+  for (int k = 0; k < 2000; ++k) {
+    const double z = 2 * U(rng) - 1, t = 2 * std::numbers::pi * U(rng), s = std::sqrt(1 - z * z);
+    sphere += std::to_string(20 * s * std::cos(t)) + " " + std::to_string(20 * s * std::sin(t)) +
+              " " + std::to_string(20 * z) + "\n";
+  }
   const std::vector<std::pair<std::string, std::string>> clouds = {
+      {"sphere.xyz", sphere},
       {"identical.xyz", identical},
       {"three.xyz", "0 0 0\n1 0 0\n0 1 0\n"},
       {"collinear.xyz", collinear},
@@ -71,6 +77,10 @@ TEST(CliInputLimits, DegenerateCloudsAreRefusedNamingTheFile) {
                  {file("disc.xyz") + ": polar curve fit: the points fill a region",
                   "% of the typical radius"});
   expect_refused({"scan-cam", file("disc.xyz")}, scratch, {file("disc.xyz") + ": "});
+  expect_refused({"scan-cam", file("sphere.xyz"), "--center", "0,0,0"}, scratch,
+                 {file("sphere.xyz") + ": cam scan: a 3D scan whose faces are not flat"});
+  expect_refused({"scan-cam", file("identical.xyz"), "--center", "0,0,0"}, scratch,
+                 {file("identical.xyz") + ": cam scan: all points coincide"});
 }
 
 // A centre of rotation far outside the cam: seen from it the contour is a narrow sector.
