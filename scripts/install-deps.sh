@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages polarform needs, and nothing when they are all present.
 # Idempotent: run it as often as you like. Works as root; uses sudo otherwise.
+# --fuzz adds clang and its libFuzzer/sanitizer runtimes for `make fuzz`.
 set -euo pipefail
 
 packages=(
@@ -11,6 +12,9 @@ packages=(
   libocct-data-exchange-dev libocct-modeling-algorithms-dev python3-ezdxf
   xvfb xauth libgl1-mesa-dri fonts-dejavu-core
 )
+if [ "${1:-}" = "--fuzz" ]; then
+  packages+=(clang libclang-rt-dev)
+fi
 
 missing=()
 for p in "${packages[@]}"; do
