@@ -43,14 +43,14 @@ double degrees_for(double radians) {
   return d;
 }
 
-void collect(const XmlElementReader& r, std::vector<std::string>& warnings) {
-  const std::vector<std::string> w = r.warnings();
-  warnings.insert(warnings.end(), w.begin(), w.end());
+void collect(const XmlElementReader& r, std::vector<UnknownName>& unknown) {
+  const std::vector<UnknownName> u = r.unknown_names();
+  unknown.insert(unknown.end(), u.begin(), u.end());
 }
 
 // The constraint children of a polynomial or B-spline segment; order = highest derivative given.
 void read_constraints(const XmlElementReader& seg, SegmentSpec& spec, const std::string& file,
-                      std::vector<std::string>& warnings) {
+                      std::vector<UnknownName>& unknown) {
   const XMLElement* start = seg.child("start");
   const XMLElement* end = seg.child("end");
   if (!start && !end) return;  // Bae 2002, eq. (5.1): v = a = 0 at both ends
@@ -61,7 +61,7 @@ void read_constraints(const XmlElementReader& seg, SegmentSpec& spec, const std:
     if (r.has("v")) d.velocity = r.number("v"), order = std::max(order, 1);
     if (r.has("a")) d.acceleration = r.number("a"), order = std::max(order, 2);
     if (r.has("j")) d.jerk = r.number("j"), order = std::max(order, 3);
-    collect(r, warnings);
+    collect(r, unknown);
   };
   read_end(start, spec.at_start);
   read_end(end, spec.at_end);
@@ -69,7 +69,7 @@ void read_constraints(const XmlElementReader& seg, SegmentSpec& spec, const std:
 }
 
 SegmentSpec read_segment(const XmlElementReader& r, double from, double level,
-                         const std::string& file, std::vector<std::string>& warnings) {
+                         const std::string& file, std::vector<UnknownName>& unknown) {
   SegmentSpec s;
   s.kind = parse_segment_kind(r.choice("kind", {"dwell", "rise", "return"}));
   s.name = r.text("name", "");
@@ -89,7 +89,7 @@ SegmentSpec read_segment(const XmlElementReader& r, double from, double level,
     s.lift = r.positive("lift", level);
   if (!(s.lift > 0)) r.fail("lift", "a lift > 0 mm (the follower is already at the base circle)");
   if (s.law == MotionLaw::Polynomial || s.law == MotionLaw::BSpline)
-    read_constraints(r, s, file, warnings);
+    read_constraints(r, s, file, unknown);
   if (s.law == MotionLaw::BSpline) {
     s.bspline.degree = r.integer("degree", s.bspline.degree);
     s.bspline.control_values = r.integer("control-values", s.bspline.control_values);
@@ -102,7 +102,7 @@ SegmentSpec read_segment(const XmlElementReader& r, double from, double level,
 }
 
 CamDesign read_cam(const XmlElementReader& r, const std::string& file,
-                   std::vector<std::string>& warnings) {
+                   std::vector<UnknownName>& unknown) {
   CamDesign d;
   d.type = r.choice("type", {"plate", "cylindrical"}, "plate") == "plate" ? CamType::Plate
                                                                           : CamType::Cylindrical;
@@ -138,14 +138,14 @@ CamDesign read_cam(const XmlElementReader& r, const std::string& file,
   double at = 0.0, level = 0.0;
   for (const XMLElement* e : segments) {
     const XmlElementReader s(e, file);
-    SegmentSpec spec = read_segment(s, at, level, file, warnings);
+    SegmentSpec spec = read_segment(s, at, level, file, unknown);
     if (std::abs(spec.start - at) > 1e-9)
       throw InputError(s.where() + ": segment starts at " + degrees_text(spec.start) +
                        " but the previous one ends at " + degrees_text(at) + " (" +
                        (spec.start > at ? "a gap" : "an overlap") + ")");
     at = spec.end;
     level += spec.kind == SegmentKind::Rise ? spec.lift : spec.kind == SegmentKind::Return ? -spec.lift : 0;
-    collect(s, warnings);
+    collect(s, unknown);
     d.segments.push_back(std::move(spec));
   }
   if (std::abs(at - 2 * std::numbers::pi) > 1e-9)
@@ -181,34 +181,36 @@ void read_conversion(const XmlElementReader& r, CamProject& p) {
 }  // namespace
 
 CamProject parse_cam_project(const std::string& text, const std::string& file,
-                             std::vector<std::string>& warnings) {
+                             std::vector<std::string>& warnings, UnknownNames policy) {
   const XmlDocument doc(text, file);
   const XmlElementReader root(doc.root(), file);
   if (std::string(doc.root()->Name()) != "polarform")
     throw InputError(root.where() + ": expected the root element <polarform>");
-  const int version = root.integer("version", 1);
-  if (version != 1) root.fail("version", "1 (the only project version this polarform reads)");
+  check_project_version(root, policy, warnings);
   const XMLElement* cam = root.child("cam");
   if (!cam) throw InputError(root.where() + ": no <cam> element");
   CamProject p;
+  std::vector<UnknownName> unknown;
   const XmlElementReader cam_reader(cam, file);
-  p.cam = read_cam(cam_reader, file, warnings);
-  collect(cam_reader, warnings);
+  p.cam = read_cam(cam_reader, file, unknown);
+  collect(cam_reader, unknown);
   if (const XMLElement* conversion = root.child("conversion")) {
     const XmlElementReader r(conversion, file);
     read_conversion(r, p);
-    collect(r, warnings);
+    collect(r, unknown);
   }
-  collect(root, warnings);
+  collect(root, unknown);
+  settle_unknown_names(unknown, policy, warnings);
   return p;
 }
 
-CamProject read_cam_project(const std::filesystem::path& file, std::vector<std::string>& warnings) {
+CamProject read_cam_project(const std::filesystem::path& file, std::vector<std::string>& warnings,
+                            UnknownNames policy) {
   if (!std::filesystem::is_regular_file(file)) throw InputError(file.string() + ": no such file");
   std::ifstream in(file, std::ios::binary);
   std::stringstream text;
   text << in.rdbuf();
-  return parse_cam_project(text.str(), file.string(), warnings);
+  return parse_cam_project(text.str(), file.string(), warnings, policy);
 }
 
 std::string cam_project_xml(const CamProject& p) {

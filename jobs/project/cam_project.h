@@ -12,6 +12,7 @@
 
 #include "designers/cam/cam_design.h"
 #include "designers/convert/polar_conversion.h"
+#include "jobs/project/unknown_names.h"
 
 namespace polarform {
 
@@ -38,11 +39,13 @@ struct CamProject {
 //                 alpha="minimax|printed" max-degree=""/>
 //   </polarform>
 // `from` defaults to the previous segment's `to` (0 for the first); a return's `lift` defaults to
-// the level reached so far. Throws InputError "file:line: <element> attribute 'x': expected …";
-// appends a warning for every unknown attribute or element.
-CamProject read_cam_project(const std::filesystem::path& file, std::vector<std::string>& warnings);
+// the level reached so far. Throws InputError "file:line: <element> attribute 'x': expected …",
+// and for unknown attributes or elements, which UnknownNames::warn turns into warnings.
+CamProject read_cam_project(const std::filesystem::path& file, std::vector<std::string>& warnings,
+                            UnknownNames policy = UnknownNames::refuse);
 CamProject parse_cam_project(const std::string& text, const std::string& file,
-                             std::vector<std::string>& warnings);
+                             std::vector<std::string>& warnings,
+                             UnknownNames policy = UnknownNames::refuse);
 
 // The project as XML (numbers in their shortest exact form) and saved atomically.
 std::string cam_project_xml(const CamProject& project);

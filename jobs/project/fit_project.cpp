@@ -1,5 +1,6 @@
 #include "jobs/project/fit_project.h"
 
+#include <cmath>
 #include <sstream>
 
 #include "export/atomic_file.h"
@@ -30,7 +31,7 @@ Enum from_word(const std::string& word, const char* const (&words)[N]) {
 std::pair<int, int> int_pair(const XmlElementReader& r, const char* name, int lo, int hi) {
   const std::vector<double> v = r.numbers(name, 2);
   for (double x : v)
-    if (x != static_cast<int>(x) || x < lo || x > hi)
+    if (!(x >= lo && x <= hi) || x != std::floor(x))  // range first: no cast of 1e10 to int
       r.fail(name, "two comma-separated integers in [" + std::to_string(lo) + ", " +
                        std::to_string(hi) + "]");
   return {static_cast<int>(v[0]), static_cast<int>(v[1])};
@@ -41,7 +42,7 @@ Eigen::Vector3d vector3(const XmlElementReader& r, const char* name) {
   return {v[0], v[1], v[2]};
 }
 
-void read_fit(const XMLElement* e, const std::string& file, std::vector<std::string>& warnings,
+void read_fit(const XMLElement* e, const std::string& file, std::vector<UnknownName>& unknown,
               FitProject& p) {
   const XmlElementReader r(e, file);
   const std::string scan = r.text("scan", "");
@@ -74,26 +75,29 @@ void read_fit(const XMLElement* e, const std::string& file, std::vector<std::str
   if (r.has("lambda")) p.fairness_weight = r.positive("lambda");
   p.base = r.choice("base", {"rqb", "quartic"}, "rqb") == "quartic" ? ArcKind::quartic
                                                                      : ArcKind::rqb;
-  const std::vector<std::string> w = r.warnings();
-  warnings.insert(warnings.end(), w.begin(), w.end());
+  const std::vector<UnknownName> u = r.unknown_names();
+  unknown.insert(unknown.end(), u.begin(), u.end());
 }
 
-FitProject read_document(const XmlDocument& doc, std::vector<std::string>& warnings) {
+FitProject read_document(const XmlDocument& doc, std::vector<std::string>& warnings,
+                         UnknownNames policy) {
   FitProject p;
+  std::vector<UnknownName> unknown;
   const XMLElement* root = doc.root();
   if (std::string(root->Name()) == "fit") {
-    read_fit(root, doc.file(), warnings, p);
-    return p;
+    read_fit(root, doc.file(), unknown, p);
+  } else {
+    const XmlElementReader r(root, doc.file());
+    if (std::string(root->Name()) != "polarform")
+      throw InputError(r.where() + ": expected a <polarform> or <fit> root element");
+    check_project_version(r, policy, warnings);
+    const XMLElement* fit = r.child("fit");
+    if (!fit) throw InputError(r.where() + ": expected a <fit> element");
+    read_fit(fit, doc.file(), unknown, p);
+    const std::vector<UnknownName> u = r.unknown_names();
+    unknown.insert(unknown.end(), u.begin(), u.end());
   }
-  const XmlElementReader r(root, doc.file());
-  if (std::string(root->Name()) != "polarform")
-    throw InputError(r.where() + ": expected a <polarform> or <fit> root element");
-  r.choice("version", {"1"}, "1");
-  const XMLElement* fit = r.child("fit");
-  if (!fit) throw InputError(r.where() + ": expected a <fit> element");
-  read_fit(fit, doc.file(), warnings, p);
-  const std::vector<std::string> w = r.warnings();
-  warnings.insert(warnings.end(), w.begin(), w.end());
+  settle_unknown_names(unknown, policy, warnings);
   return p;
 }
 
@@ -121,13 +125,14 @@ std::filesystem::path scan_path(const FitProject& project,
   return project.scan.is_absolute() ? project.scan : project_file.parent_path() / project.scan;
 }
 
-FitProject read_fit_project(const std::filesystem::path& file, std::vector<std::string>& warnings) {
-  return read_document(XmlDocument(file), warnings);
+FitProject read_fit_project(const std::filesystem::path& file, std::vector<std::string>& warnings,
+                            UnknownNames policy) {
+  return read_document(XmlDocument(file), warnings, policy);
 }
 
 FitProject parse_fit_project(const std::string& text, const std::string& file,
-                             std::vector<std::string>& warnings) {
-  return read_document(XmlDocument(text, file), warnings);
+                             std::vector<std::string>& warnings, UnknownNames policy) {
+  return read_document(XmlDocument(text, file), warnings, policy);
 }
 
 std::string fit_project_xml(const FitProject& p) {

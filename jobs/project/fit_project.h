@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "jobs/project/unknown_names.h"
 #include "src/fit/function_fit.h"
 #include "src/fit/orthogonal_coordinates.h"
 #include "src/fit/spherical_fit.h"
@@ -55,11 +56,13 @@ std::filesystem::path scan_path(const FitProject& project,
 //        pole="none|g1|cap" degree="3,3" ctrl="12,12" tolerance="mm"
 //        tolerance-measure="max|p99|p95|rms" center="x,y,z" axis="x,y,z" skip-bad="false"
 //        fairness="fixed|relative|gcv" lambda="1e-7" base="rqb|quartic"/>
-// Throws InputError "file:line: <fit> attribute 'x': expected …" for bad values; appends a warning
-// for every unknown attribute or element.
-FitProject read_fit_project(const std::filesystem::path& file, std::vector<std::string>& warnings);
+// Throws InputError "file:line: <fit> attribute 'x': expected …" for bad values, and for unknown
+// attributes or elements, which UnknownNames::warn turns into warnings.
+FitProject read_fit_project(const std::filesystem::path& file, std::vector<std::string>& warnings,
+                            UnknownNames policy = UnknownNames::refuse);
 FitProject parse_fit_project(const std::string& text, const std::string& file,
-                             std::vector<std::string>& warnings);
+                             std::vector<std::string>& warnings,
+                             UnknownNames policy = UnknownNames::refuse);
 
 // The project as XML (numbers in their shortest exact form) and saved atomically.
 std::string fit_project_xml(const FitProject& project);

@@ -26,20 +26,20 @@ std::string number(double x) {
 // Reads every element through an XmlElementReader and collects what nobody read.
 class Reader {
  public:
-  Reader(std::string file, std::vector<std::string>& warnings)
-      : file_(std::move(file)), warnings_(warnings) {}
+  explicit Reader(std::string file) : file_(std::move(file)) {}
 
   template <class F>
   void visit(const XMLElement* e, F&& read) {
     const XmlElementReader r(e, file_);
     read(r);
-    const std::vector<std::string> w = r.warnings();
-    warnings_.insert(warnings_.end(), w.begin(), w.end());
+    const std::vector<UnknownName> u = r.unknown_names();
+    unknown_.insert(unknown_.end(), u.begin(), u.end());
   }
+  const std::vector<UnknownName>& unknown() const { return unknown_; }
 
  private:
   std::string file_;
-  std::vector<std::string>& warnings_;
+  std::vector<UnknownName> unknown_;
 };
 
 CurvatureEntry read_curvature(const XmlElementReader& r) {
@@ -138,18 +138,20 @@ void read_vessel(const XMLElement* e, Reader& reader, VesselProject& p) {
   });
 }
 
-VesselProject read_document(const XmlDocument& doc, std::vector<std::string>& warnings) {
+VesselProject read_document(const XmlDocument& doc, std::vector<std::string>& warnings,
+                            UnknownNames policy) {
   VesselProject p;
-  Reader reader(doc.file(), warnings);
+  Reader reader(doc.file());
   const XMLElement* root = doc.root();
   if (std::string(root->Name()) == "vessel") {
     read_vessel(root, reader, p);
+    settle_unknown_names(reader.unknown(), policy, warnings);
     return p;
   }
   reader.visit(root, [&](const XmlElementReader& r) {
     if (std::string(root->Name()) != "polarform")
       throw InputError(r.where() + ": expected a <polarform> or <vessel> root element");
-    r.choice("version", {"1"}, "1");
+    check_project_version(r, policy, warnings);
     const XMLElement* vessel = r.child("vessel");
     if (!vessel) throw InputError(r.where() + ": expected a <vessel> element");
     read_vessel(vessel, reader, p);
@@ -160,6 +162,7 @@ VesselProject read_document(const XmlDocument& doc, std::vector<std::string>& wa
           cr.fail("tolerance", "a tolerance >= " + number(kMinTolerance) + " mm");
       });
   });
+  settle_unknown_names(reader.unknown(), policy, warnings);
   return p;
 }
 
@@ -183,13 +186,13 @@ VesselDesign to_design(const VesselProject& project) {
 }
 
 VesselProject read_vessel_project(const std::filesystem::path& file,
-                                  std::vector<std::string>& warnings) {
-  return read_document(XmlDocument(file), warnings);
+                                  std::vector<std::string>& warnings, UnknownNames policy) {
+  return read_document(XmlDocument(file), warnings, policy);
 }
 
 VesselProject parse_vessel_project(const std::string& text, const std::string& file,
-                                   std::vector<std::string>& warnings) {
-  return read_document(XmlDocument(text, file), warnings);
+                                   std::vector<std::string>& warnings, UnknownNames policy) {
+  return read_document(XmlDocument(text, file), warnings, policy);
 }
 
 std::string vessel_project_xml(const VesselProject& p) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "designers/vessel/vessel_design.h"
+#include "jobs/project/unknown_names.h"
 
 namespace polarform {
 
@@ -44,12 +45,14 @@ VesselDesign to_design(const VesselProject& project);
 //     <synthesis degree="5" ordinates="20" smoothing="1e-6" symmetric="false"
 //                max-iterations="500"/>
 //   </vessel>
-// Throws InputError "file:line: <element> attribute 'x': expected …" for bad values; appends a
-// warning for every unknown attribute or element.
+// Throws InputError "file:line: <element> attribute 'x': expected …" for bad values, and for
+// unknown attributes or elements, which UnknownNames::warn turns into warnings.
 VesselProject read_vessel_project(const std::filesystem::path& file,
-                                  std::vector<std::string>& warnings);
+                                  std::vector<std::string>& warnings,
+                                  UnknownNames policy = UnknownNames::refuse);
 VesselProject parse_vessel_project(const std::string& text, const std::string& file,
-                                   std::vector<std::string>& warnings);
+                                   std::vector<std::string>& warnings,
+                                   UnknownNames policy = UnknownNames::refuse);
 
 // The project as XML (numbers in their shortest exact form) and saved atomically.
 std::string vessel_project_xml(const VesselProject& project);

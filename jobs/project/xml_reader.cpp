@@ -10,13 +10,34 @@ namespace polarform {
 
 namespace {
 
+// What tinyxml2's error means, in words a user can act on.
 std::string describe(tinyxml2::XMLError error) {
   switch (error) {
-    case tinyxml2::XML_ERROR_MISMATCHED_ELEMENT: return "an element is not closed properly";
-    case tinyxml2::XML_ERROR_PARSING_ELEMENT: return "cannot parse an element";
-    case tinyxml2::XML_ERROR_PARSING_ATTRIBUTE: return "cannot parse an attribute";
+    case tinyxml2::XML_ERROR_MISMATCHED_ELEMENT:
+      return "an element is not closed properly (a closing tag is missing or misspelt)";
+    case tinyxml2::XML_ERROR_PARSING_ELEMENT:
+      return "cannot parse an element (a tag is not closed with '>', or a '<' stands in text: "
+             "write &lt;)";
+    case tinyxml2::XML_ERROR_PARSING_ATTRIBUTE:
+      return "cannot parse an attribute (write name=\"value\" with quotes, each name once)";
+    case tinyxml2::XML_ERROR_PARSING_TEXT:
+      return "text outside the elements (the file must start with '<')";
+    case tinyxml2::XML_ERROR_PARSING_CDATA:
+      return "a <![CDATA[ section without its ]]>";
+    case tinyxml2::XML_ERROR_PARSING_COMMENT:
+      return "a comment <!-- without its -->";
+    case tinyxml2::XML_ERROR_PARSING_DECLARATION:
+      return "a declaration <?…?> that is not closed";
+    case tinyxml2::XML_ERROR_PARSING_UNKNOWN:
+      return "a <!…> markup that is not closed";
+    case tinyxml2::XML_ERROR_PARSING:
+      return "unrecognised markup (an element name must start with a letter or '_'; no <!DOCTYPE> "
+             "inside an element)";
     case tinyxml2::XML_ERROR_EMPTY_DOCUMENT: return "the document is empty";
+    case tinyxml2::XML_ERROR_FILE_NOT_FOUND:
     case tinyxml2::XML_ERROR_FILE_COULD_NOT_BE_OPENED: return "cannot open the file";
+    case tinyxml2::XML_ERROR_FILE_READ_ERROR:
+      return "cannot read the file";
     case tinyxml2::XML_ELEMENT_DEPTH_EXCEEDED:
       return "elements nested deeper than " + std::to_string(TINYXML2_MAX_ELEMENT_DEPTH) +
              " levels";
@@ -26,7 +47,8 @@ std::string describe(tinyxml2::XMLError error) {
 
 void check_parsed(const tinyxml2::XMLDocument& doc, const std::string& file) {
   if (doc.Error())
-    throw InputError(file + ":" + std::to_string(doc.ErrorLineNum()) +
+    throw InputError(file +
+                     (doc.ErrorLineNum() > 0 ? ":" + std::to_string(doc.ErrorLineNum()) : "") +
                      ": malformed XML: " + describe(doc.ErrorID()));
   if (!doc.RootElement()) throw InputError(file + ": no root element");
 }
@@ -40,6 +62,13 @@ std::optional<double> parse_number(const char* s) {
   const auto [ptr, ec] = std::from_chars(s, end, value);
   if (ec != std::errc() || ptr != end || s == end || !std::isfinite(value)) return std::nullopt;
   return value;
+}
+
+// "a, b, c".
+std::string joined(const std::set<std::string>& names) {
+  std::string out;
+  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
 }
 
 }  // namespace
@@ -65,6 +94,7 @@ std::string XmlElementReader::where() const {
 }
 
 bool XmlElementReader::has(const char* name) const {
+  read_attributes_.insert(name);
   const char* v = e_->Attribute(name);
   return v && *v;
 }
@@ -151,6 +181,7 @@ std::vector<double> XmlElementReader::numbers(const char* name, std::size_t coun
 }
 
 std::vector<const tinyxml2::XMLElement*> XmlElementReader::children(const char* name) const {
+  asked_children_.insert(name);
   std::vector<const tinyxml2::XMLElement*> out;
   for (auto* c = e_->FirstChildElement(name); c; c = c->NextSiblingElement(name)) {
     read_children_.insert(c);
@@ -160,22 +191,54 @@ std::vector<const tinyxml2::XMLElement*> XmlElementReader::children(const char* 
 }
 
 const tinyxml2::XMLElement* XmlElementReader::child(const char* name) const {
+  asked_children_.insert(name);
   const auto* c = e_->FirstChildElement(name);
   if (c) read_children_.insert(c);
   return c;
 }
 
-std::vector<std::string> XmlElementReader::warnings() const {
-  std::vector<std::string> out;
+std::vector<UnknownName> XmlElementReader::unknown_names() const {
+  std::vector<UnknownName> out;
   for (auto* a = e_->FirstAttribute(); a; a = a->Next())
     if (!read_attributes_.count(a->Name()))
-      out.push_back(file_ + ":" + std::to_string(e_->GetLineNum()) + ": unknown attribute '" +
-                    a->Name() + "' on <" + e_->Name() + "> ignored");
+      out.push_back({file_ + ":" + std::to_string(a->GetLineNum()) + ": unknown attribute '" +
+                         a->Name() + "' on <" + e_->Name() + ">",
+                     joined(read_attributes_)});
   for (auto* c = e_->FirstChildElement(); c; c = c->NextSiblingElement())
     if (!read_children_.count(c))
-      out.push_back(file_ + ":" + std::to_string(c->GetLineNum()) + ": unknown element <" +
-                    c->Name() + "> in <" + e_->Name() + "> ignored");
+      out.push_back({file_ + ":" + std::to_string(c->GetLineNum()) + ": unknown element <" +
+                         c->Name() + "> in <" + e_->Name() + ">",
+                     joined(asked_children_)});
   return out;
+}
+
+void check_project_version(const XmlElementReader& root, UnknownNames policy,
+                           std::vector<std::string>& warnings) {
+  const int version = root.integer("version", 1);
+  if (version == 1) return;
+  if (version < 1 || policy == UnknownNames::refuse)
+    root.fail("version",
+              "1 (the project version this polarform reads; --lenient reads a newer "
+              "one as far as it knows it)");
+  warnings.push_back(root.where() + ": project version " + std::to_string(version) +
+                     " is newer than this polarform's (1): read leniently");
+}
+
+void settle_unknown_names(const std::vector<UnknownName>& unknown, UnknownNames policy,
+                          std::vector<std::string>& warnings) {
+  const auto known = [](const UnknownName& u) {
+    return u.known.empty() ? std::string(" (none known here)") : " (known here: " + u.known + ")";
+  };
+  if (unknown.empty()) return;
+  if (policy == UnknownNames::warn) {
+    for (const UnknownName& u : unknown) warnings.push_back(u.what + " ignored" + known(u));
+    return;
+  }
+  std::string message;
+  for (const UnknownName& u : unknown) message += (message.empty() ? "" : "; ") + u.what + known(u);
+  throw InputError(message +
+                   " - a misspelt or unsupported name would build another part than the "
+                   "one written (--lenient ignores unknown names with a warning)");
 }
 
 }  // namespace polarform

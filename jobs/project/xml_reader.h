@@ -1,6 +1,7 @@
 // Reading project XML with errors users can act on: every bad value names the file, line,
 // element and attribute and says what was expected; attributes and child elements that nobody
-// asked for become warnings naming their line. Built on tinyxml2 (line numbers from GetLineNum).
+// asked for are refused with the names that are known (or, leniently, become warnings). Built on
+// tinyxml2 (line numbers from GetLineNum).
 #pragma once
 
 #include <tinyxml2.h>
@@ -13,7 +14,16 @@
 #include <string>
 #include <vector>
 
+#include "jobs/project/unknown_names.h"
+
 namespace polarform {
+
+// An attribute or element nobody read: "file:line: unknown attribute 'x' on <cam>" and the names
+// the reader knows there, "a, b".
+struct UnknownName {
+  std::string what;
+  std::string known;
+};
 
 // A parsed XML document; throws InputError naming the file and line on malformed XML.
 class XmlDocument {
@@ -37,7 +47,7 @@ class XmlElementReader {
 
   const tinyxml2::XMLElement* element() const { return e_; }
   std::string where() const;  // "file:line: <name>"
-  bool has(const char* name) const;
+  bool has(const char* name) const;  // present and not empty; marks the name as known
 
   // A finite number; with a default when absent (or empty), else required.
   double number(const char* name) const;
@@ -55,12 +65,12 @@ class XmlElementReader {
   // A comma-separated list of numbers ("3,3").
   std::vector<double> numbers(const char* name, std::size_t count) const;
 
-  // Child elements by name, in document order (each marked as read).
+  // Child elements by name, in document order (each marked as read, the name as known).
   std::vector<const tinyxml2::XMLElement*> children(const char* name) const;
   const tinyxml2::XMLElement* child(const char* name) const;  // the first, or null
 
-  // "file:line: unknown attribute 'x' on <cam>" for every attribute and child left unread.
-  std::vector<std::string> warnings() const;
+  // Every attribute and child element left unread, with the names this reader asked for.
+  std::vector<UnknownName> unknown_names() const;
 
   [[noreturn]] void fail(const char* attribute, const std::string& expected) const;
 
@@ -70,7 +80,17 @@ class XmlElementReader {
   const tinyxml2::XMLElement* e_;
   std::string file_;
   mutable std::set<std::string> read_attributes_;
+  mutable std::set<std::string> asked_children_;
   mutable std::set<const tinyxml2::XMLElement*> read_children_;
 };
+
+// The root's `version`: 1 is read; a newer one only leniently, with a warning.
+void check_project_version(const XmlElementReader& root, UnknownNames policy,
+                           std::vector<std::string>& warnings);
+
+// Settles the unknown names a reader collected: throws one InputError listing them all (refuse)
+// or appends "… ignored (known here: …)" to warnings (warn).
+void settle_unknown_names(const std::vector<UnknownName>& unknown, UnknownNames policy,
+                          std::vector<std::string>& warnings);
 
 }  // namespace polarform

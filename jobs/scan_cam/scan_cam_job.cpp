@@ -1,10 +1,32 @@
 #include "jobs/scan_cam/scan_cam_job.h"
 
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <string>
+
 #include "src/error.h"
 #include "src/fit/stage_times.h"
 #include "src/io/point_cloud.h"
+#include "src/number_text.h"
 
 namespace polarform {
+
+namespace {
+
+// A base radius far from the nominal's (beyond 5 tolerances and 2 % of it) is no wear: the scan
+// is likely of another cam than the nominal describes.
+std::optional<std::string> wrong_nominal_warning(const ScanCamJobResult& r,
+                                                 const ScanCamJobOptions& o) {
+  const double nominal = r.nominal->base_radius(), scanned = r.scan.base_radius;
+  const double limit = std::max(o.tolerance ? 5.0 * *o.tolerance : 0.0, 0.02 * nominal);
+  if (!(std::abs(scanned - nominal) > limit)) return std::nullopt;
+  return "the scan's base radius " + number_text(scanned) + " mm differs from the nominal's " +
+         number_text(nominal) + " mm by " + number_text(scanned - nominal) + " mm: is " +
+         r.nominal_file.string() + " this cam's design (wrong nominal?)";
+}
+
+}  // namespace
 
 ScanCamJobResult run_scan_cam_job(const std::filesystem::path& scan, const ScanCamJobOptions& o) {
   StageClock clock;
@@ -16,7 +38,7 @@ ScanCamJobResult run_scan_cam_job(const std::filesystem::path& scan, const ScanC
       throw InputError("the follower and the sense of rotation come from the nominal design " +
                        o.nominal->string() + "; do not give them as options");
     r.nominal_file = *o.nominal;
-    r.nominal_project = read_cam_project(*o.nominal, r.warnings);
+    r.nominal_project = read_cam_project(*o.nominal, r.warnings, o.nominal_names);
     if (r.nominal_project->cam.type != CamType::Plate)
       throw InputError(o.nominal->string() + ": a " +
                        std::string(cam_type_name(r.nominal_project->cam.type)) +
@@ -53,6 +75,7 @@ ScanCamJobResult run_scan_cam_job(const std::filesystem::path& scan, const ScanC
         naming_input(scan.string(), [&] { return compare_to_nominal(r.scan, *r.nominal); });
     r.tolerance = o.tolerance;
     if (o.tolerance) r.within_tolerance = r.comparison->normal_stats.max <= *o.tolerance;
+    if (const auto w = wrong_nominal_warning(r, o)) r.warnings.push_back(*w);
   }
   r.seconds = r.read_seconds + clock.lap();
   return r;

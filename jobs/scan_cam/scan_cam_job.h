@@ -19,6 +19,7 @@ struct ScanCamJobOptions {
   std::optional<Eigen::Vector3d> center;         // a point on the axis (X, Y, 0 for a 2D centre)
   std::optional<Eigen::Vector3d> axis;           // estimated when absent
   std::optional<std::filesystem::path> nominal;  // cam project (XML)
+  UnknownNames nominal_names = UnknownNames::refuse;  // the nominal's unknown names
   std::optional<double> tolerance;               // mm: profile tolerance band about the nominal
   // The follower that reads the displacement when there is no nominal (the nominal's otherwise).
   std::optional<Follower> follower;

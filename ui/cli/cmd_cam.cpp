@@ -23,11 +23,13 @@ struct CamArgs {
   std::optional<double> solid;
   std::optional<double> bore;
   bool quiet = false;
+  bool lenient = false;
 };
 
 void run(const CamArgs& a) {
   std::vector<std::string> warnings;
-  CamProject project = read_cam_project(a.design, warnings);
+  CamProject project =
+      read_cam_project(a.design, warnings, a.lenient ? UnknownNames::warn : UnknownNames::refuse);
   for (const std::string& w : warnings) std::cerr << "polarform: warning: " << w << "\n";
   if (a.tolerance) project.conversion.tolerance = *a.tolerance;
   if (!a.base.empty()) project.conversion.base = a.base == "rqb" ? ArcKind::rqb : ArcKind::quartic;
@@ -101,6 +103,7 @@ void add_cam_command(CLI::App& app) {
       ->check(positive_mm())
       ->needs(solid);
   cmd->add_flag("--quiet,-q", args->quiet, "print nothing but warnings and errors");
+  cmd->add_flag("--lenient", args->lenient, kLenientHelp);
   cmd->callback([args] { run(*args); });
 }
 

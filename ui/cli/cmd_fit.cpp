@@ -24,7 +24,7 @@ struct FitArgs {
   std::string method, closed, pole, degree, ctrl, tol, tol_measure, center, axis;
   std::string fairness, lambda, base;
   std::string threads = "2";
-  bool skip_bad = false, quiet = false;
+  bool skip_bad = false, quiet = false, lenient = false;
 };
 
 // "X,Y,Z", or "X,Y" (Z = 0) where `planar_ok`.
@@ -87,7 +87,8 @@ void run(const FitArgs& a) {
   FitJobOptions defaults;
   if (std::filesystem::path(a.scan).extension() == ".xml") {
     std::vector<std::string> warnings;
-    const FitProject project = read_fit_project(a.scan, warnings);
+    const FitProject project =
+        read_fit_project(a.scan, warnings, a.lenient ? UnknownNames::warn : UnknownNames::refuse);
     for (const std::string& w : warnings) std::cerr << "polarform: warning: " << w << "\n";
     scan = scan_path(project, a.scan);
     defaults = fit_job_options(project);
@@ -171,6 +172,7 @@ void add_fit_command(CLI::App& app) {
   cmd->add_flag("--skip-bad", args->skip_bad,
                 "skip unparsable or non-finite records instead of stopping");
   cmd->add_flag("--quiet,-q", args->quiet, "no progress bars and no summary");
+  cmd->add_flag("--lenient", args->lenient, kLenientHelp);
   cmd->callback([args] { run(*args); });
 }
 

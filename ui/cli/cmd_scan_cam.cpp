@@ -9,6 +9,7 @@
 
 #include "jobs/scan_cam/scan_cam_outputs.h"
 #include "src/error.h"
+#include "src/number_text.h"
 #include "src/units.h"
 #include "ui/cli/commands.h"
 #include "ui/cli/fit_arguments.h"
@@ -21,7 +22,7 @@ namespace {
 struct ScanCamArgs {
   std::string scan, out, center, bore, axis = "auto", nominal, tol, follower, roller_radius, offset,
                                        rotation, threads = "2";
-  bool skip_bad = false, quiet = false;
+  bool skip_bad = false, quiet = false, lenient = false;
 };
 
 ScanCamJobOptions job_options(const ScanCamArgs& a) {
@@ -37,6 +38,7 @@ ScanCamJobOptions job_options(const ScanCamArgs& a) {
       throw InputError("--axis '" + a.axis + "': expected a non-zero vector");
   }
   if (!a.nominal.empty()) o.nominal = a.nominal;
+  o.nominal_names = a.lenient ? UnknownNames::warn : UnknownNames::refuse;
   if (!a.tol.empty()) o.tolerance = parse_numbers("--tol", a.tol, 1, 1)[0];
   const bool follower_given = !a.follower.empty() || !a.roller_radius.empty() || !a.offset.empty();
   if (follower_given) {
@@ -63,23 +65,9 @@ ScanCamJobOptions job_options(const ScanCamArgs& a) {
   return o;
 }
 
-void run(const ScanCamArgs& a) {
-  ScanCamJobOptions o = job_options(a);
-  ProgressBar reading("reading ", !a.quiet);
-  o.read_progress = [&reading](double f) {
-    reading(f);
-    if (f >= 1.0) reading.finish();
-  };
-  const ScanCamJobResult r = run_scan_cam_job(a.scan, o);
-  const std::vector<std::string> files = write_scan_cam_outputs(r, a.out);
-  for (const std::string& w : r.warnings) std::cerr << "polarform: warning: " << w << "\n";
-  if (r.dropped > 0)
-    std::cerr << "polarform: warning: " << r.dropped << " bad records skipped in " << a.scan
-              << "\n";
-  if (r.tolerance && !r.within_tolerance)
-    std::cerr << "polarform: the profile deviates from the nominal by up to "
-              << r.comparison->normal_stats.max << " mm, beyond the tolerance " << *r.tolerance
-              << " mm\n";
+// The summary on stdout, unless --quiet.
+void print_summary(const ScanCamArgs& a, const ScanCamJobResult& r,
+                   const std::vector<std::string>& files) {
   if (a.quiet) return;
   const ScannedCam& s = r.scan;
   std::printf("%s scan, %ld contour points; centre: %s\n", s.profile.three_d ? "3D" : "2D",
@@ -104,6 +92,28 @@ void run(const ScanCamArgs& a) {
     std::printf("tolerance ±%.3g mm: %s\n", *r.tolerance, r.within_tolerance ? "met" : "NOT MET");
   std::printf("wrote %zu files to %s (%.0f ms)\n", files.size(),
               std::filesystem::absolute(a.out).string().c_str(), r.seconds * 1e3);
+  std::fflush(stdout);
+}
+
+void run(const ScanCamArgs& a) {
+  ScanCamJobOptions o = job_options(a);
+  ProgressBar reading("reading ", !a.quiet);
+  o.read_progress = [&reading](double f) {
+    reading(f);
+    if (f >= 1.0) reading.finish();
+  };
+  const ScanCamJobResult r = run_scan_cam_job(a.scan, o);
+  const std::vector<std::string> files = write_scan_cam_outputs(r, a.out);
+  for (const std::string& w : r.warnings) std::cerr << "polarform: warning: " << w << "\n";
+  if (r.dropped > 0)
+    std::cerr << "polarform: warning: " << r.dropped << " bad records skipped in " << a.scan
+              << "\n";
+  print_summary(a, r, files);
+  if (r.tolerance && !r.within_tolerance)
+    throw OutOfTolerance("out of tolerance: the profile deviates from the nominal by up to " +
+                         number_text(r.comparison->normal_stats.max) +
+                         " mm, beyond the tolerance ±" + number_text(*r.tolerance) +
+                         " mm (exit status 3)");
 }
 
 }  // namespace
@@ -138,7 +148,8 @@ void add_scan_cam_command(CLI::App& app) {
       ->check(CLI::ExistingFile);
   cmd->add_option("--tol", args->tol,
                   "MM: tolerance band of the profile about the nominal (needs --nominal); the "
-                  "report says whether the normal deviation stays within ±MM");
+                  "report says whether the normal deviation stays within ±MM, and the exit status "
+                  "is 3 when it does not");
   cmd->add_option("--follower", args->follower,
                   "knife-edge|roller|flat-faced: the follower that reads s(θ) without a nominal "
                   "(default knife-edge)");
@@ -149,6 +160,7 @@ void add_scan_cam_command(CLI::App& app) {
   cmd->add_flag("--skip-bad", args->skip_bad,
                 "skip unparsable or non-finite records instead of stopping");
   cmd->add_flag("--quiet,-q", args->quiet, "no progress bar and no summary");
+  cmd->add_flag("--lenient", args->lenient, kLenientHelp);
   cmd->callback([args] { run(*args); });
 }
 

@@ -19,6 +19,7 @@ struct StudyArgs {
   std::string range = "1e-2:1e-7";
   int per_decade = 2;
   bool quiet = false;
+  bool lenient = false;
 };
 
 std::pair<double, double> parse_range(const std::string& text) {
@@ -45,7 +46,8 @@ void run(const StudyArgs& a) {
   const auto [loosest, tightest] = parse_range(a.range);
   const std::vector<double> tolerances = log_tolerances(loosest, tightest, a.per_decade);
   std::vector<std::string> warnings;
-  const CamProject project = read_cam_project(a.design, warnings);
+  const CamProject project =
+      read_cam_project(a.design, warnings, a.lenient ? UnknownNames::warn : UnknownNames::refuse);
   for (const std::string& w : warnings) std::cerr << "polarform: warning: " << w << "\n";
   ProgressBar bar("study", !a.quiet);
   const StudyJobResult r =
@@ -81,6 +83,7 @@ void add_study_command(CLI::App& app) {
       ->check(CLI::Range(1, 20))
       ->capture_default_str();
   cmd->add_flag("--quiet,-q", args->quiet, "print nothing but warnings and errors");
+  cmd->add_flag("--lenient", args->lenient, kLenientHelp);
   cmd->callback([args] { run(*args); });
 }
 

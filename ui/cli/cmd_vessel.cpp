@@ -19,6 +19,7 @@ struct VesselArgs {
   std::string out;
   std::optional<double> tolerance;
   bool quiet = false;
+  bool lenient = false;
 };
 
 // The job's errors name the field and the numbers; the file they came from is added here.
@@ -34,7 +35,8 @@ VesselJobResult run_job(const VesselProject& project, const std::string& file) {
 
 void run(const VesselArgs& a) {
   std::vector<std::string> warnings;
-  VesselProject project = read_vessel_project(a.design, warnings);
+  VesselProject project = read_vessel_project(
+      a.design, warnings, a.lenient ? UnknownNames::warn : UnknownNames::refuse);
   for (const std::string& w : warnings) std::cerr << "polarform: warning: " << w << "\n";
   if (a.tolerance) project.tolerance = *a.tolerance;
 
@@ -91,6 +93,7 @@ void add_vessel_command(CLI::App& app) {
   cmd->add_option("--tol", args->tolerance, "conversion tolerance in mm (overrides the project)")
       ->check(tolerance_mm());
   cmd->add_flag("--quiet,-q", args->quiet, "print nothing but warnings and errors");
+  cmd->add_flag("--lenient", args->lenient, kLenientHelp);
   cmd->callback([args] { run(*args); });
 }
 

@@ -3,11 +3,19 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <stdexcept>
 #include <string>
 
 #include "src/error.h"
 
 namespace polarform::cli {
+
+// Ends a command whose work is done (every output written) with exit status 3: the inspected part
+// is out of its tolerance. QC scripts gate on the status; main prints the message.
+class OutOfTolerance : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 // Adds every subcommand to the app.
 void register_commands(CLI::App& app);
@@ -22,6 +30,11 @@ auto for_design(const std::string& design, Job&& job) {
     throw InputError(design + ": " + e.what());
   }
 }
+
+// The help of --lenient, on every command that reads a project file.
+inline constexpr const char* kLenientHelp =
+    "read a project with unknown attributes or elements, or of a newer version, ignoring what "
+    "this polarform does not know (a warning for each); without it they are an error";
 
 // One per cmd_*.cpp.
 void add_cam_command(CLI::App& app);

@@ -1,5 +1,6 @@
 // polarform: command-line front end. Each subcommand lives in its own cmd_*.cpp and registers
-// itself here; errors from bad input become one line on stderr and exit code 2.
+// itself here; errors from bad input become one line on stderr and exit code 2, an inspected
+// part out of tolerance exit code 3.
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <string>
@@ -41,6 +42,9 @@ int main(int argc, char** argv) {
       }
     }
     return app.exit(e) == 0 ? 0 : 2;
+  } catch (const polarform::cli::OutOfTolerance& e) {
+    std::cerr << "polarform: " << e.what() << "\n";
+    return 3;
   } catch (const polarform::InputError& e) {
     std::cerr << "polarform: error: " << e.what() << "\n";
     return 2;

@@ -106,7 +106,9 @@ TEST(CamProject, PolynomialConstraintsSetTheirOrder) {
 
 TEST(CamProject, BrokenFilesGiveSpecificErrors) {
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {"<polarform version=\"1\"><cam", "cam.xml:1: malformed XML: cannot parse an element"},
+      {"<polarform version=\"1\"><cam",
+       "cam.xml:1: malformed XML: cannot parse an element (a tag is not closed with '>', or a "
+       "'<' stands in text: write &lt;)"},
       {cam(kPlate, "<segment kind=\"rise\" law=\"cycloidal\" lift=\"twenty\" to=\"180\"/>\n"),
        "cam.xml:3: <segment> attribute 'lift': expected a finite number, got 'twenty'"},
       {cam("follower=\"roller\" base-radius=\"-40\" roller-radius=\"10\"", kSegments),
@@ -143,8 +145,8 @@ TEST(CamProject, BrokenFilesGiveSpecificErrors) {
        "got 'flat-faced'"},
       {"<cam/>", "cam.xml:1: <cam>: expected the root element <polarform>"},
       {"<polarform version=\"2\"/>",
-       "cam.xml:1: <polarform> attribute 'version': expected 1 (the only project version this "
-       "polarform reads), got '2'"},
+       "cam.xml:1: <polarform> attribute 'version': expected 1 (the project version this "
+       "polarform reads; --lenient reads a newer one as far as it knows it), got '2'"},
       {cam(kPlate, "<segment kind=\"return\" law=\"cycloidal\" to=\"360\"/>\n"),
        "cam.xml:3: <segment> attribute 'lift': expected a lift > 0 mm (the follower is already at "
        "the base circle)"},
@@ -160,12 +162,34 @@ TEST(CamProject, BrokenFilesGiveSpecificErrors) {
   for (const auto& [xml, expected] : cases) EXPECT_EQ(error_of(xml), expected) << xml;
 }
 
-TEST(CamProject, UnknownFieldsWarnWithTheirLine) {
+TEST(CamProject, UnknownNamesAreErrorsNamingLineAndKnownNames) {
+  // The cases: units that are not read and an oscillating follower that does not exist
+  // would build another cam than the one written.
+  const std::string inch = error_of(cam(kPlate + " units=\"inch\"", kSegments));
+  EXPECT_NE(inch.find("cam.xml:2: unknown attribute 'units' on <cam> (known here: "),
+            std::string::npos)
+      << inch;
+  EXPECT_NE(inch.find("base-radius"), std::string::npos) << inch;
+  EXPECT_NE(inch.find("--lenient"), std::string::npos) << inch;
+  const std::string arm =
+      error_of(cam(kPlate + " motion=\"oscillating\" arm-length=\"100\"", kSegments));
+  EXPECT_NE(arm.find("unknown attribute 'motion' on <cam>"), std::string::npos) << arm;
+  EXPECT_NE(arm.find("unknown attribute 'arm-length' on <cam>"), std::string::npos) << arm;
+  const std::string note = error_of(cam(kPlate, kSegments + "<note/>\n"));
+  EXPECT_NE(note.find("cam.xml:5: unknown element <note> in <cam> (known here: segment)"),
+            std::string::npos)
+      << note;
+}
+
+TEST(CamProject, LenientReadingWarnsWithTheirLine) {
   std::vector<std::string> warnings;
-  parse_cam_project(cam(kPlate + " colour=\"red\"", kSegments + "<note/>\n"), "cam.xml", warnings);
+  const CamProject p = parse_cam_project(cam(kPlate + " colour=\"red\"", kSegments + "<note/>\n"),
+                                         "cam.xml", warnings, UnknownNames::warn);
+  EXPECT_EQ(p.cam.segments.size(), 2u);
   ASSERT_EQ(warnings.size(), 2u);
-  EXPECT_EQ(warnings[0], "cam.xml:2: unknown attribute 'colour' on <cam> ignored");
-  EXPECT_EQ(warnings[1], "cam.xml:5: unknown element <note> in <cam> ignored");
+  EXPECT_EQ(warnings[0].substr(0, 56), "cam.xml:2: unknown attribute 'colour' on <cam> ignored (");
+  EXPECT_EQ(warnings[1],
+            "cam.xml:5: unknown element <note> in <cam> ignored (known here: segment)");
 }
 
 // Random corruption of valid projects: every outcome is a project or an InputError.

@@ -95,6 +95,9 @@ TEST(FitProject, BadValuesNameLineAndAttribute) {
       {"scan=\"a.xyz\" degree=\"3,10\"", "[1, 9]"},
       {"scan=\"a.xyz\" ctrl=\"1,12\"", "[2, 2000]"},
       {"scan=\"a.xyz\" ctrl=\"12,12.5\"", "attribute 'ctrl'"},
+      // Found by fuzzing: a count beyond int was cast before its range was checked (UB).
+      {"scan=\"a.xyz\" ctrl=\"1e10,12\"", "[2, 2000]"},
+      {"scan=\"a.xyz\" degree=\"3,-1e300\"", "[1, 9]"},
       {"scan=\"a.xyz\" tolerance=\"-1\"", "attribute 'tolerance'"},
       {"scan=\"a.xyz\" ctrl=\"12,12\" tolerance=\"0.1\"", "either ctrl or tolerance"},
       {"scan=\"a.xyz\" tolerance-measure=\"median\"", "attribute 'tolerance-measure'"},
@@ -121,15 +124,30 @@ TEST(FitProject, BadValuesNameLineAndAttribute) {
   EXPECT_THROW(parse("<fit scan=\"a.xyz\""), InputError);
 }
 
-TEST(FitProject, UnknownFieldsWarnWithTheirLine) {
+TEST(FitProject, UnknownNamesAreErrorsOrLenientWarnings) {
+  const std::string xml =
+      "<polarform version=\"1\">\n<fit scan=\"a.xyz\" "
+      "colour=\"red\">\n<extra/>\n</fit>\n</polarform>\n";
+  std::string error;
+  try {
+    parse(xml);
+  } catch (const InputError& e) {
+    error = e.what();
+  }
+  EXPECT_NE(error.find("fit.xml:2: unknown attribute 'colour' on <fit> (known here: "),
+            std::string::npos)
+      << error;
+  EXPECT_NE(error.find("fit.xml:3: unknown element <extra> in <fit> (none known here)"),
+            std::string::npos)
+      << error;
   std::vector<std::string> warnings;
-  parse("<polarform version=\"1\">\n<fit scan=\"a.xyz\" colour=\"red\">\n<extra/>\n</fit>\n"
-        "</polarform>\n",
-        &warnings);
+  const FitProject p = parse_fit_project(xml, "fit.xml", warnings, UnknownNames::warn);
+  EXPECT_EQ(p.scan, "a.xyz");
   ASSERT_EQ(warnings.size(), 2u);
-  EXPECT_NE(warnings[0].find("fit.xml:2"), std::string::npos) << warnings[0];
-  EXPECT_NE(warnings[0].find("colour"), std::string::npos) << warnings[0];
-  EXPECT_NE(warnings[1].find("extra"), std::string::npos) << warnings[1];
+  EXPECT_NE(warnings[0].find("fit.xml:2: unknown attribute 'colour' on <fit> ignored"),
+            std::string::npos)
+      << warnings[0];
+  EXPECT_NE(warnings[1].find("<extra>"), std::string::npos) << warnings[1];
 }
 
 }  // namespace

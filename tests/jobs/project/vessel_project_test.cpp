@@ -175,25 +175,36 @@ TEST(VesselProject, BadValuesNameFileLineAndAttribute) {
       {"<polarform version=\"1\"/>", "t.xml:1: <polarform>: expected a <vessel> element"},
       {"<cam/>", "t.xml:1: <cam>: expected a <polarform> or <vessel> root element"},
       {"<polarform version=\"2\"><vessel/></polarform>",
-       "t.xml:1: <polarform> attribute 'version': expected one of 1, got '2'"},
+       "t.xml:1: <polarform> attribute 'version': expected 1 (the project version this polarform "
+       "reads; --lenient reads a newer one as far as it knows it), got '2'"},
   };
   for (const auto& [xml, expected] : cases) EXPECT_EQ(error_of(xml), expected) << xml;
 }
 
-TEST(VesselProject, UnknownFieldsAreWarnings) {
-  std::vector<std::string> warnings;
-  parse_vessel_project(
-      "<polarform version=\"1\">\n<vessel " + kVessel + " colour=\"red\">\n"
+TEST(VesselProject, UnknownNamesAreErrorsOrLenientWarnings) {
+  const std::string xml =
+      "<polarform version=\"1\">\n<vessel " + kVessel +
+      " colour=\"red\">\n"
       "<curvature theta=\"20\" kappa=\"0.002\" unit=\"1/mm\"/>\n"
       "<head preset=\"hemispherical\" crown=\"900\"/>\n"
-      "<nozzle/>\n</vessel>\n<conversion tolerance=\"0.01\" base=\"quasi-uniform\"/>\n</polarform>",
-      "t.xml", warnings);
+      "<nozzle/>\n</vessel>\n<conversion tolerance=\"0.01\" base=\"quasi-uniform\"/>\n</polarform>";
+  std::vector<std::string> warnings;
+  const std::string error = error_of(xml);
+  for (const char* line :
+       {"t.xml:3: unknown attribute 'unit' on <curvature> (known here: ",
+        "t.xml:4: unknown attribute 'crown' on <head> (known here: ",
+        "t.xml:2: unknown attribute 'colour' on <vessel> (known here: ",
+        "t.xml:5: unknown element <nozzle> in <vessel> (known here: ",
+        "t.xml:7: unknown attribute 'base' on <conversion> (known here: tolerance)"})
+    EXPECT_NE(error.find(line), std::string::npos) << line << " in " << error;
+  parse_vessel_project(xml, "t.xml", warnings, UnknownNames::warn);
   ASSERT_EQ(warnings.size(), 5u);
-  EXPECT_EQ(warnings[0], "t.xml:3: unknown attribute 'unit' on <curvature> ignored");
-  EXPECT_EQ(warnings[1], "t.xml:4: unknown attribute 'crown' on <head> ignored");
-  EXPECT_EQ(warnings[2], "t.xml:2: unknown attribute 'colour' on <vessel> ignored");
-  EXPECT_EQ(warnings[3], "t.xml:5: unknown element <nozzle> in <vessel> ignored");
-  EXPECT_EQ(warnings[4], "t.xml:7: unknown attribute 'base' on <conversion> ignored");
+  EXPECT_EQ(warnings[0].rfind(
+                "t.xml:3: unknown attribute 'unit' on <curvature> ignored (known here: ", 0),
+            0u)
+      << warnings[0];
+  EXPECT_EQ(warnings[4],
+            "t.xml:7: unknown attribute 'base' on <conversion> ignored (known here: tolerance)");
 }
 
 }  // namespace

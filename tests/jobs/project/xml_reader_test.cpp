@@ -1,4 +1,4 @@
-// XmlElementReader: typed attributes with file:line errors and warnings for what nobody read.
+// XmlElementReader: typed attributes with file:line errors, and unknown names refused or warned.
 #include <gtest/gtest.h>
 
 #include "jobs/project/xml_reader.h"
@@ -28,7 +28,7 @@ TEST(XmlReader, TypedAttributes) {
   EXPECT_FALSE(cam.optional_number("absent"));
   EXPECT_EQ(cam.choice("k", {"knife-edge", "roller"}), "roller");
   EXPECT_EQ(cam.numbers("v", 2), (std::vector<double>{3, 4}));
-  EXPECT_TRUE(cam.warnings().empty());
+  EXPECT_TRUE(cam.unknown_names().empty());
 }
 
 TEST(XmlReader, ErrorsNameFileLineElementAttribute) {
@@ -49,24 +49,86 @@ TEST(XmlReader, ErrorsNameFileLineElementAttribute) {
             "t.xml:2: <cam> attribute 'i': expected a finite number, got 'inf'");
 }
 
-TEST(XmlReader, WarningsForUnreadAttributesAndElements) {
-  const XmlDocument doc("<cam a=\"1\" colour=\"red\">\n  <segment/>\n  <sgement/>\n</cam>", "t.xml");
+TEST(XmlReader, UnreadAttributesAndElementsAreUnknownNamesWithTheKnownOnes) {
+  const XmlDocument doc("<cam a=\"1\"\n colour=\"red\">\n  <segment/>\n  <sgement/>\n</cam>",
+                        "t.xml");
   const XmlElementReader cam(doc.root(), doc.file());
   cam.number("a");
+  cam.has("b");
   cam.children("segment");
-  const auto w = cam.warnings();
-  ASSERT_EQ(w.size(), 2u);
-  EXPECT_EQ(w[0], "t.xml:1: unknown attribute 'colour' on <cam> ignored");
-  EXPECT_EQ(w[1], "t.xml:3: unknown element <sgement> in <cam> ignored");
+  cam.child("conversion");
+  const std::vector<UnknownName> unknown = cam.unknown_names();
+  ASSERT_EQ(unknown.size(), 2u);
+  EXPECT_EQ(unknown[0].what, "t.xml:2: unknown attribute 'colour' on <cam>");
+  EXPECT_EQ(unknown[0].known, "a, b");
+  EXPECT_EQ(unknown[1].what, "t.xml:4: unknown element <sgement> in <cam>");
+  EXPECT_EQ(unknown[1].known, "conversion, segment");
+
+  std::vector<std::string> warnings;
+  EXPECT_EQ(error_of([&] { settle_unknown_names(unknown, UnknownNames::refuse, warnings); }),
+            "t.xml:2: unknown attribute 'colour' on <cam> (known here: a, b); "
+            "t.xml:4: unknown element <sgement> in <cam> (known here: conversion, segment) - "
+            "a misspelt or unsupported name would build another part than the one written "
+            "(--lenient ignores unknown names with a warning)");
+  EXPECT_TRUE(warnings.empty());
+  settle_unknown_names(unknown, UnknownNames::warn, warnings);
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_EQ(warnings[0], "t.xml:2: unknown attribute 'colour' on <cam> ignored (known here: a, b)");
+  EXPECT_EQ(
+      warnings[1],
+      "t.xml:4: unknown element <sgement> in <cam> ignored (known here: conversion, segment)");
+  settle_unknown_names({}, UnknownNames::refuse, warnings);  // nothing unknown: no error
 }
 
-TEST(XmlReader, MalformedDocuments) {
-  EXPECT_EQ(error_of([] { XmlDocument("<cam>\n<segment>\n</cam>", "bad.xml"); }),
-            "bad.xml:2: malformed XML: an element is not closed properly");
-  EXPECT_EQ(error_of([] { XmlDocument("<cam a=1/>", "bad.xml"); }),
-            "bad.xml:1: malformed XML: cannot parse an attribute");
-  EXPECT_EQ(error_of([] { XmlDocument("", "empty.xml"); }),
-            "empty.xml:0: malformed XML: the document is empty");
+TEST(XmlReader, NewerProjectVersionsOnlyLeniently) {
+  std::vector<std::string> warnings;
+  for (const char* version : {"1", "1.0"}) {
+    const XmlDocument doc(std::string("<polarform version=\"") + version + "\"/>", "p.xml");
+    check_project_version(XmlElementReader(doc.root(), doc.file()), UnknownNames::refuse, warnings);
+  }
+  const XmlDocument v2("<polarform version=\"2\"/>", "p.xml");
+  const XmlElementReader root(v2.root(), v2.file());
+  EXPECT_NE(error_of([&] {
+              check_project_version(root, UnknownNames::refuse, warnings);
+            }).find("p.xml:1: <polarform> attribute 'version': expected 1"),
+            std::string::npos);
+  EXPECT_TRUE(warnings.empty());
+  check_project_version(root, UnknownNames::warn, warnings);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0],
+            "p.xml:1: <polarform>: project version 2 is newer than this polarform's "
+            "(1): read leniently");
+  const XmlDocument v0("<polarform version=\"0\"/>", "p.xml");
+  EXPECT_THROW(
+      check_project_version(XmlElementReader(v0.root(), v0.file()), UnknownNames::warn, warnings),
+      InputError);
+}
+
+TEST(XmlReader, MalformedDocumentsAreDescribedInWords) {
+  const struct {
+    const char* xml;
+    const char* expected;
+  } cases[] = {
+      {"<cam>\n<segment>\n</cam>",
+       "bad.xml:2: malformed XML: an element is not closed properly (a closing tag is missing or "
+       "misspelt)"},
+      {"<cam a=1/>",
+       "bad.xml:1: malformed XML: cannot parse an attribute (write name=\"value\" with quotes, "
+       "each name once)"},
+      {"<cam a=\"1\" a=\"2\"/>", "cannot parse an attribute"},
+      {"<cam>\nx < y</cam>", "bad.xml:2: malformed XML: cannot parse an element"},
+      {"base-radius = 40", "bad.xml:1: malformed XML: text outside the elements"},
+      {"<cam><!-- a note </cam>", "a comment <!-- without its -->"},
+      {"<cam><![CDATA[ x </cam>", "a <![CDATA[ section without its ]]>"},
+      {"<?xml version", "a declaration <?…?> that is not closed"},
+      {"<cam>\n\n<1segment/></cam>", "bad.xml:3: malformed XML: unrecognised markup"},
+      {"", "bad.xml: malformed XML: the document is empty"},
+  };
+  for (const auto& c : cases) {
+    const std::string error = error_of([&] { XmlDocument(c.xml, "bad.xml"); });
+    EXPECT_NE(error.find(c.expected), std::string::npos) << c.xml << " -> " << error;
+    EXPECT_EQ(error.find("XML_"), std::string::npos) << error;  // no tinyxml2 identifiers
+  }
   EXPECT_EQ(error_of([] { XmlDocument(std::filesystem::path("/nonexistent/x.xml")); }),
             "/nonexistent/x.xml: no such file");
 }

@@ -132,19 +132,29 @@ TEST(Cli, OptionsOverrideTheProject) {
   EXPECT_LE(capped["exported_profile"]["max_radial_error_mm"].get<double>(), 1e-3);
 }
 
-TEST(Cli, UnknownProjectFieldsWarnAndRun) {
+TEST(Cli, UnknownProjectFieldsAreErrorsUnlessLenient) {
   const ScratchDir scratch("cli_warn");
   std::string xml = slurp(kExamples / "roller.xml");
   xml.replace(xml.find("rpm=\"300\""), 9, "rpm=\"300\" colour=\"red\"");
   xml.replace(xml.find("</cam>"), 6, "<note/>\n  </cam>");
   spit(scratch / "warn.xml", xml);
-  const CliRun run = run_cli(
+  const CliRun strict = run_cli(
       {"cam", (scratch / "warn.xml").string(), "--out", (scratch / "out").string(), "-q"}, scratch);
+  EXPECT_EQ(strict.status, 2) << strict.err;
+  EXPECT_NE(strict.err.find("warn.xml:5: unknown attribute 'colour' on <cam> (known here: "),
+            std::string::npos)
+      << strict.err;
+  EXPECT_FALSE(fs::exists(scratch / "out"));
+  const CliRun run = run_cli({"cam", (scratch / "warn.xml").string(), "--out",
+                              (scratch / "out").string(), "-q", "--lenient"},
+                             scratch);
   EXPECT_EQ(run.status, 0) << run.err;
-  EXPECT_NE(run.err.find("warn.xml:5: unknown attribute 'colour' on <cam> ignored"),
+  EXPECT_NE(run.err.find("warn.xml:5: unknown attribute 'colour' on <cam> ignored (known here: "),
             std::string::npos)
       << run.err;
-  EXPECT_NE(run.err.find("unknown element <note> in <cam> ignored"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("unknown element <note> in <cam> ignored (known here: segment)"),
+            std::string::npos)
+      << run.err;
   EXPECT_EQ(snapshot(scratch / "out").size(), 12u);
 }
 

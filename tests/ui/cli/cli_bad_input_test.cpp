@@ -52,6 +52,10 @@ std::vector<BadProject> bad_projects() {
       {"wrong_version", edited("version=\"1\"", "version=\"2\""),
        ":2: <polarform> attribute 'version'"},
       {"no_cam", "<polarform version=\"1\"/>\n", "no <cam> element"},
+      {"unknown_units", edited("type=\"plate\"", "type=\"plate\" units=\"inch\""),
+       ":3: unknown attribute 'units' on <cam> (known here: "},
+      {"unknown_element", edited("</cam>", "<follower-arm length=\"100\"/></cam>"),
+       "unknown element <follower-arm> in <cam> (known here: segment)"},
       {"no_segments",
        "<polarform version=\"1\"><cam follower=\"knife-edge\" base-radius=\"40\"/>"
        "</polarform>\n",

@@ -64,6 +64,40 @@ TEST(Cli, FitVizAndScanCamSucceedOnTheExamples) {
               0.01);
 }
 
+// An inspected cam out of its tolerance still gets every output, and exit status 3 for QC scripts;
+// a nominal whose base radius is far from the scan's is called out as likely the wrong one.
+TEST(Cli, ScanCamOutOfToleranceExitsThreeAndSuspectsAWrongNominal) {
+  const auto dir = scratch_dir();
+  std::ifstream in(example("cams/roller.xml"));
+  std::stringstream roller;
+  roller << in.rdbuf();
+  std::string wrong = roller.str();
+  wrong.replace(wrong.find("base-radius=\"40\""), 16, "base-radius=\"50\"");
+  write_text(dir / "wrong.xml", wrong);
+  const Outcome out = polarform("scan-cam " + example("scans/cam_profile.xyz") + " --nominal " +
+                                    (dir / "wrong.xml").string() + " --tol 0.05 --out " +
+                                    (dir / "cam").string() + " -q",
+                                dir);
+  EXPECT_EQ(out.code, 3) << out.err;
+  EXPECT_NE(out.err.find("polarform: out of tolerance: the profile deviates from the nominal by "
+                         "up to "),
+            std::string::npos)
+      << out.err;
+  EXPECT_NE(out.err.find("polarform: warning: the scan's base radius "), std::string::npos)
+      << out.err;
+  EXPECT_NE(out.err.find(" mm differs from the nominal's 50 mm by -"), std::string::npos)
+      << out.err;
+  EXPECT_NE(out.err.find("(wrong nominal?)"), std::string::npos) << out.err;
+  EXPECT_EQ(read_json(dir / "cam/report.json")["tolerance"]["within"], false);
+  // Within tolerance: exit 0 and no suspicion.
+  const Outcome good = polarform("scan-cam " + example("scans/cam_profile.xyz") + " --nominal " +
+                                     example("cams/roller.xml") + " --tol 0.05 --out " +
+                                     (dir / "good").string() + " -q",
+                                 dir);
+  EXPECT_EQ(good.code, 0) << good.err;
+  EXPECT_EQ(good.err.find("wrong nominal"), std::string::npos) << good.err;
+}
+
 // A fit project names the scan (relative to itself) and the options; flags override them.
 TEST(Cli, FitRunsAProjectAndFlagsOverrideIt) {
   const auto dir = scratch_dir();
