@@ -190,6 +190,11 @@ CamDesignStage design_cam(const CamProject& project) {
   return {project, std::move(program), std::move(continuity), make_barrel_cam(d)};
 }
 
+std::optional<double> default_pressure_angle_limit(const CamDesign& cam) {
+  if (cam.follower.kind == FollowerKind::FlatFaced) return std::nullopt;
+  return 30.0 * kRadiansPerDegree;
+}
+
 Extremum CamAnalysisStage::max_pressure_angle() const {
   if (const auto* p = std::get_if<PlateCamAnalysis>(&cam)) return p->analysis.max_pressure_angle;
   const auto& c = std::get<CylindricalCamAnalysis>(cam);
@@ -223,6 +228,15 @@ CamAnalysisStage analyse_cam(const CamDesignStage& design, const CamJobOptions& 
     c.developed_walls = developed_walls(barrel, a.curves.theta);
     a.cam = std::move(c);
   }
+  a.pressure_angle_limit = design.project.pressure_angle_limit
+                               ? design.project.pressure_angle_limit
+                               : default_pressure_angle_limit(design.project.cam);
+  const Extremum worst = a.max_pressure_angle();
+  if (a.pressure_angle_limit && worst.value > *a.pressure_angle_limit)
+    a.warnings.push_back("max pressure angle " + degrees_text(worst.value) +
+                         " at θ = " + degrees_text(worst.theta) + " exceeds the limit " +
+                         degrees_text(*a.pressure_angle_limit) +
+                         ": increase the base radius, lengthen the segment or offset the follower");
   return a;
 }
 

@@ -77,11 +77,19 @@ struct CylindricalCamAnalysis {
   std::array<std::vector<Eigen::Vector2d>, 2> developed_walls;
 };
 
+// The largest |pressure angle| a design should have when its project sets none: 30° for
+// translating knife-edge and roller followers and for cylindrical cams (the usual rule, e.g.
+// Norton's Cam Design and Manufacturing Handbook); none for a flat-faced follower, whose pressure
+// angle is fixed by its geometry.
+std::optional<double> default_pressure_angle_limit(const CamDesign& cam);
+
 struct CamAnalysisStage {
   std::vector<double> angles;          // the analysis grid, rad
   std::vector<Kinematics> kinematics;  // at each grid angle, in time at the cam's speed
   MotionCurves curves;
   std::variant<PlateCamAnalysis, CylindricalCamAnalysis> cam;  // as the design's cam
+  std::optional<double> pressure_angle_limit;  // rad: the project's, or the follower's default
+  std::vector<std::string> warnings;           // a pressure angle beyond the limit
 
   // The largest |pressure angle| and where (rad): the plate cam's analysis, or the cylindrical
   // cam's grid maximum.

@@ -169,6 +169,11 @@ Figure analysis_figure(const CamDesignStage& d, const CamAnalysisStage& a) {
     radius.y_label = "track height z [mm]";
     radius.add(series("", x, z));
   }
+  if (a.pressure_angle_limit) {
+    const double limit = *a.pressure_angle_limit * kDegreesPerRadian;
+    pressure.add_horizontal_line(limit, "limit " + number_text(limit) + "°", kJumpColor);
+    pressure.add_horizontal_line(-limit, "", kJumpColor);
+  }
   mark_segments(d, pressure, true);
   mark_segments(d, radius, false);
   return f;

@@ -97,12 +97,17 @@ void add_analysis_fields(json& j, const CamDesignStage& d, const CamAnalysisStag
     j["max_pressure_angle_deg"] = r.max_pressure_angle().value * kDegreesPerRadian;
     j["undercut"] = false;
   }
+  if (r.pressure_angle_limit) {
+    j["pressure_angle_limit_deg"] = *r.pressure_angle_limit * kDegreesPerRadian;
+    j["pressure_angle_within_limit"] = r.max_pressure_angle().value <= *r.pressure_angle_limit;
+  } else {
+    j["pressure_angle_limit_deg"] = nullptr;  // a flat-faced follower: fixed by its geometry
+  }
   j["speed_rad_per_s"] = angular_speed(d.project.cam.rpm);
 }
 
-// What the conversion left out and the degree-limited and capped profiles.
+// The degree-limited and capped profiles.
 void add_profile_extras(json& j, const CamConversionStage& c) {
-  j["warnings"] = c.warnings;
   const auto* profile = std::get_if<PlateProfile>(&c.profile);
   if (profile && profile->limited)
     j["degree_limited"] = {{"degree", profile->limited->curve.degree()},
@@ -125,6 +130,11 @@ json cam_report_fields(const CamDesignStage& design, const CamAnalysisStage& ana
   if (conversion) add_profile_fields(j, design, *conversion);
   add_analysis_fields(j, design, analysis);
   if (conversion) add_profile_extras(j, *conversion);
+  // What the analyses found beyond their limits and what the conversion left out.
+  std::vector<std::string> warnings = analysis.warnings;
+  if (conversion)
+    warnings.insert(warnings.end(), conversion->warnings.begin(), conversion->warnings.end());
+  j["warnings"] = warnings;
   return j;
 }
 

@@ -193,6 +193,11 @@ CamProject parse_cam_project(const std::string& text, const std::string& file,
   std::vector<UnknownName> unknown;
   const XmlElementReader cam_reader(cam, file);
   p.cam = read_cam(cam_reader, file, unknown);
+  if (const auto limit = cam_reader.optional_number("pressure-angle-limit")) {
+    if (!(*limit > 0 && *limit < 90))
+      cam_reader.fail("pressure-angle-limit", "an angle in (0, 90) degrees");
+    p.pressure_angle_limit = *limit * kRadiansPerDegree;
+  }
   collect(cam_reader, unknown);
   if (const XMLElement* conversion = root.child("conversion")) {
     const XmlElementReader r(conversion, file);
@@ -229,6 +234,8 @@ std::string cam_project_xml(const CamProject& p) {
   attr("offset", number(d.follower.offset));
   attr("rotation", std::string(rotation_name(d.rotation)));
   attr("rpm", number(d.rpm));
+  if (p.pressure_angle_limit)
+    attr("pressure-angle-limit", number(degrees_for(*p.pressure_angle_limit)));
   if (d.type == CamType::Cylindrical) {
     attr("cylinder-radius", number(d.cylinder_radius));
     attr("z0", number(d.z0));

@@ -21,6 +21,9 @@ struct CamProject {
   ConversionOptions conversion;
   // Highest spline degree the exported profile files may have; empty = the exact degree.
   std::optional<int> max_degree;
+  // The largest acceptable |pressure angle|, rad; empty = the follower's default
+  // (default_pressure_angle_limit in jobs/cam/cam_job.h).
+  std::optional<double> pressure_angle_limit;
 
   bool operator==(const CamProject&) const = default;
 };
@@ -29,7 +32,8 @@ struct CamProject {
 //   <polarform version="1">
 //     <cam type="plate|cylindrical" follower="knife-edge|roller|flat-faced" base-radius="mm"
 //          roller-radius="mm" offset="mm" rotation="ccw|cw" rpm="1/min" cylinder-radius="mm"
-//          z0="mm" groove-depth="mm, walls at cylinder-radius ± depth/2 (cylindrical)">
+//          z0="mm" groove-depth="mm, walls at cylinder-radius ± depth/2 (cylindrical)"
+//          pressure-angle-limit="deg, in (0, 90)">
 //       <segment kind="dwell|rise|return" law="…" lift="mm" from="deg" to="deg" name="…"
 //                degree="5" control-values="10" minimise="1|2|3">   (degree…: law="bspline")
 //         <start v="mm/rad" a="mm/rad²" j="mm/rad³"/>  <end …/>   (law="polynomial|bspline")

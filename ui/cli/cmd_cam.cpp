@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "jobs/cam/cam_outputs.h"
+#include "src/number_text.h"
 #include "src/units.h"
 #include "ui/cli/commands.h"
 #include "ui/cli/validators.h"
@@ -42,8 +43,8 @@ void run(const CamArgs& a) {
   options.bore_diameter = a.bore;
   const std::vector<std::string> files = write_cam_outputs(r, a.out, options);
 
-  for (const std::string& w : r.conversion.warnings)
-    std::cerr << "polarform: warning: " << w << "\n";
+  for (const auto* list : {&r.analysis.warnings, &r.conversion.warnings})
+    for (const std::string& w : *list) std::cerr << "polarform: warning: " << w << "\n";
   for (const ContinuityIssue& issue : r.design.continuity)
     std::cerr << "polarform: motion: " << issue.message() << "\n";
   if (a.quiet) return;
@@ -54,11 +55,17 @@ void run(const CamArgs& a) {
               r.conversion.degree(), r.conversion.control_points());
   std::printf("tolerance %.3g mm: measured max radial error %.3g mm, max normal error %.3g mm\n",
               c.tolerance, c.max_radial_error, c.max_normal_error);
+  const std::string limit = r.analysis.pressure_angle_limit
+                                ? " (limit " + degrees_text(*r.analysis.pressure_angle_limit) + ")"
+                                : std::string();
   if (const auto* p = std::get_if<PlateCamAnalysis>(&r.analysis.cam)) {
-    std::printf("max pressure angle %.2f deg, min radius of curvature %.3f mm, undercut: %s\n",
-                p->analysis.max_pressure_angle.value * kDegreesPerRadian,
+    std::printf("max pressure angle %.2f deg%s, min radius of curvature %.3f mm, undercut: %s\n",
+                p->analysis.max_pressure_angle.value * kDegreesPerRadian, limit.c_str(),
                 p->analysis.min_convex_contour_radius.value,
                 p->analysis.undercut.empty() ? "none" : "YES");
+  } else {
+    std::printf("max pressure angle %.2f deg at the pitch radius%s\n",
+                r.analysis.max_pressure_angle().value * kDegreesPerRadian, limit.c_str());
   }
   if (const auto* p = std::get_if<PlateProfile>(&r.conversion.profile); p && p->limited)
     std::printf("degree-%d profile: %d control points, measured max radial error %.3g mm\n",

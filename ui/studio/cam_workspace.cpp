@@ -168,7 +168,11 @@ void CamWorkspace::draw_editor() {
   if (ImGui::CollapsingHeader("Follower and cam", ImGuiTreeNodeFlags_DefaultOpen)) {
     settings_panel_.draw(edit.cam, view_, log());
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 9);
-    drag_angle("pressure-angle limit", view_.pressure_angle_limit, 1.0, 89.0);
+    // The limit is the project's (the CLI's report uses the same); the view only mirrors it.
+    double limit = edit.pressure_angle_limit.value_or(
+        default_pressure_angle_limit(edit.cam).value_or(view_.pressure_angle_limit));
+    if (drag_angle("pressure-angle limit", limit, 1.0, 89.0)) edit.pressure_angle_limit = limit;
+    view_.pressure_angle_limit = limit;
     static constexpr std::string_view kUnits[] = {"per radian", "in time at the speed"};
     int units = view_.units == MotionUnits::per_radian ? 0 : 1;
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 9);

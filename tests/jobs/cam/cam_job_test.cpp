@@ -9,6 +9,7 @@
 
 #include "jobs/cam/cam_report.h"
 #include "src/error.h"
+#include "src/number_text.h"
 #include "tests/support/jobs/cam_job_support.h"
 #include "tests/support/jobs/closed_forms.h"
 
@@ -144,6 +145,35 @@ TEST(CamJob, UnreachableDegreeLimitedProfileIsAWarningNotAFailure) {
   EXPECT_NE(r.conversion.warnings[0].find("1e-08 mm"), std::string::npos)
       << r.conversion.warnings[0];
   EXPECT_LE(r.conversion.conversion.max_radial_error, 1e-8);
+}
+
+// The pressure-angle limit: the project's, else 30° (none for a flat face); beyond it a warning in
+// the analysis stage and report.json (which both front ends print), never a failure.
+TEST(CamJob, PressureAngleBeyondTheLimitIsWarnedAbout) {
+  const CamJobResult& roller = example("roller").result;
+  const double worst = plate_analysis(roller).max_pressure_angle.value;
+  EXPECT_NEAR(*roller.analysis.pressure_angle_limit, 30.0 * kRadiansPerDegree, 1e-15);
+  EXPECT_EQ(roller.analysis.warnings.empty(), worst <= 30.0 * kRadiansPerDegree);
+  EXPECT_FALSE(example("flat_faced").result.analysis.pressure_angle_limit.has_value());
+
+  CamProject p = load_example("roller");
+  p.pressure_angle_limit = worst - 0.5 * kRadiansPerDegree;
+  const CamAnalysisStage below = analyse_cam(design_cam(p));
+  ASSERT_EQ(below.warnings.size(), 1u);
+  EXPECT_NE(below.warnings[0].find("max pressure angle " + degrees_text(worst) + " at θ = " +
+                                   degrees_text(plate_analysis(roller).max_pressure_angle.theta) +
+                                   " exceeds the limit " + degrees_text(*p.pressure_angle_limit)),
+            std::string::npos)
+      << below.warnings[0];
+  const nlohmann::json j = cam_report_fields(design_cam(p), below, nullptr);
+  EXPECT_EQ(j["pressure_angle_within_limit"], false);
+  EXPECT_NEAR(j["pressure_angle_limit_deg"].get<double>(), worst * kDegreesPerRadian - 0.5, 1e-9);
+  EXPECT_EQ(j["warnings"].size(), 1u);
+
+  p.pressure_angle_limit = worst + 0.5 * kRadiansPerDegree;
+  const CamAnalysisStage above = analyse_cam(design_cam(p));
+  EXPECT_TRUE(above.warnings.empty());
+  EXPECT_EQ(cam_report_fields(design_cam(p), above, nullptr)["pressure_angle_within_limit"], true);
 }
 
 // The stages the studio runs live — design, analyses, and the conversion with fewer error samples

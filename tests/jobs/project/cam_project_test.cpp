@@ -1,6 +1,8 @@
 // Cam project files: the examples load cleanly, round-trip exactly and are the designs the
 // designer tests build in code; every kind of broken file gives its own error naming file, line
 // and field; random corruption never escapes as anything but InputError.
+#include "jobs/project/cam_project.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -9,8 +11,8 @@
 #include <random>
 #include <sstream>
 
-#include "jobs/project/cam_project.h"
 #include "src/error.h"
+#include "src/units.h"
 #include "tests/support/designers/example_cams.h"
 
 namespace polarform {
@@ -59,6 +61,22 @@ TEST(CamProject, ExamplesLoadWithoutWarningsAndRoundTripExactly) {
     ++count;
   }
   EXPECT_EQ(count, 5);
+}
+
+TEST(CamProject, PressureAngleLimitIsReadInDegreesAndSaved) {
+  std::vector<std::string> warnings;
+  const CamProject p = parse_cam_project(cam(kPlate + " pressure-angle-limit=\"35\"", kSegments),
+                                         "cam.xml", warnings);
+  ASSERT_TRUE(p.pressure_angle_limit);
+  EXPECT_NEAR(*p.pressure_angle_limit * kDegreesPerRadian, 35.0, 1e-12);
+  EXPECT_NE(cam_project_xml(p).find("pressure-angle-limit=\"35\""), std::string::npos);
+  EXPECT_TRUE(parse_cam_project(cam_project_xml(p), "saved.xml", warnings) == p);
+  EXPECT_FALSE(parse_cam_project(cam(kPlate, kSegments), "cam.xml", warnings).pressure_angle_limit);
+  for (const char* bad : {"0", "90", "-5", "x"})
+    EXPECT_NE(error_of(cam(kPlate + " pressure-angle-limit=\"" + bad + "\"", kSegments))
+                  .find("attribute 'pressure-angle-limit'"),
+              std::string::npos)
+        << bad;
 }
 
 // The tests of designers/ build the examples in code: every file reads to exactly that design
