@@ -48,10 +48,18 @@ double psi_rate(const Jet* xy) {
   return (xy[0][0] * xy[1][1] - xy[1][0] * xy[0][1]) / (xy[0][0] * xy[0][0] + xy[1][0] * xy[1][0]);
 }
 
-[[noreturn]] void not_single_valued(double from, double to, const char* what) {
-  throw InputError("cam " + std::string(what) + " is not single-valued in polar angle between θ = " +
-                   degrees_text(from) + " and " + degrees_text(to) +
-                   " (undercut, cusp or loop); increase the base radius or reduce the roller radius");
+// The remedy depends on the follower: a roller's radius can be reduced, a flat face needs
+// Rb + s + s'' > 0 (a larger base radius or a gentler acceleration), a knife edge a larger base.
+[[noreturn]] void not_single_valued(double from, double to, const char* what,
+                                    FollowerKind follower) {
+  const char* remedy =
+      follower == FollowerKind::Roller ? "increase the base radius or reduce the roller radius"
+      : follower == FollowerKind::FlatFaced
+          ? "increase the base radius or lengthen the segment (a flat face needs Rb + s + s'' > 0)"
+          : "increase the base radius or lengthen the segment";
+  throw InputError("cam " + std::string(what) +
+                   " is not single-valued in polar angle between θ = " + degrees_text(from) +
+                   " and " + degrees_text(to) + " (undercut, cusp or loop); " + remedy);
 }
 
 std::shared_ptr<CurveTable> build_table(const PlateCam& cam, CamCurve curve) {
@@ -93,7 +101,9 @@ std::shared_ptr<CurveTable> build_table(const PlateCam& cam, CamCurve curve) {
         const auto m = [&](double x) { return margin(s, x); };
         const double from = margins[lo] > 0 ? bisect_sign_change(m, thetas[lo], bad) : thetas[lo];
         const double to = margins[hi] > 0 ? bisect_sign_change(m, bad, thetas[hi]) : thetas[hi];
-        not_single_valued(from, to, what);
+        not_single_valued(
+            from, to, what,
+            curve == CamCurve::Contour ? cam.follower().kind : FollowerKind::KnifeEdge);
       }
     }
     for (int i = s == 0 ? 0 : 1; i <= n; ++i) {

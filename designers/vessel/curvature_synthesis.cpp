@@ -164,11 +164,10 @@ SynthesisResult synthesize_profile(const SynthesisProblem& problem) {
     case nlopt::XTOL_REACHED: out.termination = "step tolerance reached"; break;
     case nlopt::ROUNDOFF_LIMITED: out.termination = "round-off limited"; break;
     default:
-      throw NumericalError("synthesis: SLSQP did not converge within " +
-                           std::to_string(settings.max_iterations) +
-                           " evaluations (objective " + to_text(out.objective) +
-                           ", projected gradient " + to_text(out.stationarity) +
-                           "); raise max_iterations or smoothing");
+      throw NumericalError(
+          "synthesis: SLSQP did not converge within " + std::to_string(settings.max_iterations) +
+          " evaluations (objective " + to_text(out.objective) + ", projected gradient " +
+          to_text(out.stationarity) + "); raise <synthesis> max-iterations or smoothing");
   }
 
   const Eigen::VectorXd ordinates = L * (space.map * xv);

@@ -42,7 +42,7 @@ SynthesisSpace synthesis_space(const SynthesisSettings& s) {
   if (!(s.smoothing >= 0.0 && std::isfinite(s.smoothing)))
     throw InputError("synthesis: smoothing " + to_text(s.smoothing) + ", expected a finite λ >= 0");
   if (s.max_iterations < 1 || s.max_iterations > kMaxSynthesisIterations)
-    throw InputError("synthesis: max_iterations " + std::to_string(s.max_iterations) +
+    throw InputError("synthesis: max-iterations " + std::to_string(s.max_iterations) +
                      ", expected in [1, " + std::to_string(kMaxSynthesisIterations) + "]");
 
   SynthesisSpace space;

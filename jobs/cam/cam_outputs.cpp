@@ -165,6 +165,7 @@ std::map<std::string, std::string> render_cam_outputs(const CamJobResult& r,
     if (profile->limited) {
       DxfWriter limited;
       limited.add(profile->limited->curve, "PROFILE");
+      limited.add_circle(Eigen::Vector3d::Zero(), r.project().cam.base_radius, "BASE_CIRCLE");
       content["profile_deg" + std::to_string(profile->limited->curve.degree()) + ".dxf"] =
           limited.str();
     }

@@ -211,6 +211,19 @@ TEST(PlateCam, UndercutIsReportedWithItsAngles) {
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("not single-valued in polar angle between θ = "), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("reduce the roller radius"), std::string::npos)
+        << e.what();
+  }
+  // A flat face has no roller to shrink: its cusp names the remedies it has.
+  const PlateCam flat(steep, {FollowerKind::FlatFaced, 0.0, 0.0}, 20.0);
+  try {
+    cam_polar_function(flat);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("not single-valued in polar angle"), std::string::npos) << message;
+    EXPECT_EQ(message.find("roller"), std::string::npos) << message;
+    EXPECT_NE(message.find("a flat face needs Rb + s + s'' > 0"), std::string::npos) << message;
   }
 }
 

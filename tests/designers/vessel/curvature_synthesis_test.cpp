@@ -178,6 +178,8 @@ TEST(CurvatureSynthesis, NonConvergenceIsReported) {
   const std::string message = error_of([&] { synthesize_profile(problem); });
   EXPECT_THAT(message, HasSubstr("synthesis: SLSQP did not converge within 3 evaluations (objective "));
   EXPECT_THAT(message, HasSubstr("projected gradient"));
+  // Named as the project file spells it (<synthesis max-iterations>), not as the code does.
+  EXPECT_THAT(message, HasSubstr("raise <synthesis> max-iterations or smoothing"));
   EXPECT_THROW(synthesize_profile(problem), NumericalError);
 }
 
@@ -219,7 +221,7 @@ TEST(CurvatureSynthesis, BadInput) {
   problem.settings.ordinates = 20;
   problem.settings.max_iterations = 1000000000;
   EXPECT_EQ(error_of([&] { synthesize_profile(problem); }),
-            "synthesis: max_iterations 1000000000, expected in [1, 10000]");
+            "synthesis: max-iterations 1000000000, expected in [1, 10000]");
   problem.settings.max_iterations = 500;
   problem.targets.assign(kMaxCurvatureTargets + 1, {1.0, 0.002, 1.0});
   EXPECT_EQ(error_of([&] { synthesize_profile(problem); }),

@@ -47,9 +47,15 @@ TEST(CamExchange, DxfSplinesAreTheJobsCurves) {
       ASSERT_EQ(circles.size(), 1u);
       EXPECT_EQ(circles[0].layer, "BASE_CIRCLE");
       EXPECT_EQ(circles[0].radius, r.project().cam.base_radius);
-      const std::vector<ReadSpline> limited = read_dxf_splines(slurp(run.dir / "profile_deg3.dxf"));
+      const std::string deg3 = slurp(run.dir / "profile_deg3.dxf");
+      const std::vector<ReadSpline> limited = read_dxf_splines(deg3);
       ASSERT_EQ(limited.size(), 1u);
       expect_same_curve(limited[0], plate_profile(r).limited->curve, false);
+      // The degree-3 drawing carries the same base circle.
+      const std::vector<ReadCircle> deg3_circles = read_dxf_circles(deg3);
+      ASSERT_EQ(deg3_circles.size(), 1u);
+      EXPECT_EQ(deg3_circles[0].layer, "BASE_CIRCLE");
+      EXPECT_EQ(deg3_circles[0].radius, r.project().cam.base_radius);
     } else {
       expect_same_curve(splines[0], track_of(r).curve, false);
     }
