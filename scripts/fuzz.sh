@@ -5,7 +5,8 @@
 # tests/fuzz/dict/<harness>.dict. New inputs go to BUILD_DIR/fuzz-corpus/<harness>/ (the
 # repository's corpus is only read); a crash, leak, UB report, timeout (> FUZZ_TIMEOUT s, default
 # 1) or allocation over FUZZ_MALLOC_MB (default 1024) is saved in BUILD_DIR/fuzz-findings/<harness>/.
-# Prints executions and coverage per harness (also into FUZZ_SUMMARY, default
+# Inputs are at most FUZZ_MAX_LEN bytes (default 8192: every record type and header fits, and
+# the rate stays high). Prints executions and coverage per harness (also into FUZZ_SUMMARY, default
 # BUILD_DIR/fuzz-summary.txt); exits 1 if anything was found.
 #   usage: scripts/fuzz.sh BUILD_DIR [HARNESS...]      (no HARNESS: every harness built)
 set -uo pipefail
@@ -16,6 +17,7 @@ source_dir=$(cd "$(dirname "$0")/.." && pwd)
 seconds=${FUZZ_SECONDS:-60}
 timeout=${FUZZ_TIMEOUT:-1}
 malloc_mb=${FUZZ_MALLOC_MB:-1024}
+max_len=${FUZZ_MAX_LEN:-8192}
 runs=()
 [ -n "${FUZZ_RUNS:-}" ] && runs=(-runs="$FUZZ_RUNS")
 summary=${FUZZ_SUMMARY:-$build/fuzz-summary.txt}
@@ -45,7 +47,7 @@ for h in "${harnesses[@]}"; do
   echo "fuzz: $h for ${seconds} s" >&2
   "$binary" "$work" "$source_dir/tests/fuzz/corpus/$h" "${dict[@]}" "${runs[@]}" \
     -max_total_time="$seconds" -timeout="$timeout" -rss_limit_mb=2048 \
-    -malloc_limit_mb="$malloc_mb" -max_len=65536 -print_final_stats=1 \
+    -malloc_limit_mb="$malloc_mb" -max_len="$max_len" -print_final_stats=1 \
     -artifact_prefix="$findings/" > "$log" 2>&1
   status=$?
   executions=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
