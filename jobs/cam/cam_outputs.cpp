@@ -14,6 +14,7 @@
 #include "export/step_writer.h"
 #include "export/svg_plot.h"
 #include "export/x3d_writer.h"
+#include "jobs/cam/cam_key_figures.h"
 #include "jobs/cam/cam_plots.h"
 #include "jobs/cam/cam_report.h"
 #include "jobs/report/conversion_report.h"
@@ -73,21 +74,22 @@ std::string html_report(const CamJobResult& r, const CamOutputOptions& o, const 
   HtmlReport html("polarform cam report: " + o.design_name);
   const PolarConversion& c = r.conversion.conversion;
   const bool plate = r.plate();
-  std::vector<std::pair<std::string, std::string>> key = {
-      {"tolerance", format_trimmed(c.tolerance * 1e3, 4) + " µm"},
-      {"measured max radial error", format_trimmed(c.max_radial_error * 1e3, 4) + " µm"},
-      {"measured max normal error", format_trimmed(c.max_normal_error * 1e3, 4) + " µm"},
-      {"degree", std::to_string(r.conversion.degree())},
-      {"control points", std::to_string(r.conversion.control_points())},
-      {"base-circle arcs", std::to_string(c.arcs.size())},
-      {"max tangent jump at arc junctions",
-       format_trimmed(c.max_tangent_jump * kDegreesPerRadian, 6) + "°"}};
-  if (report.contains("max_pressure_angle_deg"))
-    key.emplace_back("max pressure angle",
-                     format_trimmed(report["max_pressure_angle_deg"].get<double>(), 2) + "°");
-  if (const auto* p = std::get_if<PlateCamAnalysis>(&r.analysis.cam))
-    key.emplace_back("undercut", p->analysis.undercut.empty() ? "none" : "YES");
+  // First what was asked and what came of it (jobs/cam/cam_key_figures.h), then the details.
+  const auto pairs = [](const std::vector<KeyFigure>& figures) {
+    std::vector<std::pair<std::string, std::string>> out;
+    for (const KeyFigure& f : figures) out.emplace_back(f.name, f.value);
+    return out;
+  };
+  html.add_heading("Design");
+  html.add_key_figures(pairs(cam_design_inputs(r.design)));
+  html.add_heading("Key results");
+  std::vector<std::pair<std::string, std::string>> key =
+      pairs(cam_key_results(r.design, r.analysis, &r.conversion));
+  key.emplace_back("max tangent jump at arc junctions",
+                   format_trimmed(c.max_tangent_jump * kDegreesPerRadian, 6) + "°");
   html.add_key_figures(key);
+  for (const auto* list : {&r.analysis.warnings, &r.conversion.warnings})
+    for (const std::string& w : *list) html.add_paragraph("Warning: " + w);
   if (!r.design.continuity.empty()) {
     html.add_heading("Continuity of the motion program");
     for (const ContinuityIssue& issue : r.design.continuity) html.add_paragraph(issue.message());

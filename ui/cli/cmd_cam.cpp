@@ -5,6 +5,7 @@
 #include <iostream>
 #include <numbers>
 
+#include "jobs/cam/cam_key_figures.h"
 #include "jobs/cam/cam_outputs.h"
 #include "src/number_text.h"
 #include "src/units.h"
@@ -49,24 +50,15 @@ void run(const CamArgs& a) {
     std::cerr << "polarform: motion: " << issue.message() << "\n";
   if (a.quiet) return;
   const PolarConversion& c = r.conversion.conversion;
+  const std::vector<KeyFigure> inputs = cam_design_inputs(r.design);
+  const std::vector<KeyFigure> results = cam_key_results(r.design, r.analysis, &r.conversion);
   std::printf("%s cam, %s follower: %zu arcs, degree %d, %d control points\n",
               std::string(cam_type_name(project.cam.type)).c_str(),
               std::string(follower_kind_name(project.cam.follower.kind)).c_str(), c.arcs.size(),
               r.conversion.degree(), r.conversion.control_points());
-  std::printf("tolerance %.3g mm: measured max radial error %.3g mm, max normal error %.3g mm\n",
-              c.tolerance, c.max_radial_error, c.max_normal_error);
-  const std::string limit = r.analysis.pressure_angle_limit
-                                ? " (limit " + degrees_text(*r.analysis.pressure_angle_limit) + ")"
-                                : std::string();
-  if (const auto* p = std::get_if<PlateCamAnalysis>(&r.analysis.cam)) {
-    std::printf("max pressure angle %.2f deg%s, min radius of curvature %.3f mm, undercut: %s\n",
-                p->analysis.max_pressure_angle.value * kDegreesPerRadian, limit.c_str(),
-                p->analysis.min_convex_contour_radius.value,
-                p->analysis.undercut.empty() ? "none" : "YES");
-  } else {
-    std::printf("max pressure angle %.2f deg at the pitch radius%s\n",
-                r.analysis.max_pressure_angle().value * kDegreesPerRadian, limit.c_str());
-  }
+  // The design and the key results, as report.html's first tables state them.
+  for (const auto* figures : {&inputs, &results})
+    for (const KeyFigure& f : *figures) std::printf("%s: %s\n", f.name.c_str(), f.value.c_str());
   if (const auto* p = std::get_if<PlateProfile>(&r.conversion.profile); p && p->limited)
     std::printf("degree-%d profile: %d control points, measured max radial error %.3g mm\n",
                 p->limited->curve.degree(), p->limited->control_points,

@@ -6,6 +6,7 @@
 #include <map>
 #include <regex>
 
+#include "jobs/cam/cam_key_figures.h"
 #include "tests/support/jobs/cam_job_support.h"
 #include "tests/ui/cli/cli_run.h"
 
@@ -86,6 +87,12 @@ TEST(Cli, CamOnTheRollerExampleWritesTheJobsFiles) {
   const std::string summary = std::to_string(job["arcs"].get<int>()) + " arcs, degree 9, " +
                               std::to_string(job["control_points"].get<int>()) + " control points";
   EXPECT_NE(run.out.find(summary), std::string::npos) << run.out;
+  // The design and key results, in report.html's words.
+  const CamJobResult& r = example("roller").result;
+  for (const auto& figures :
+       {cam_design_inputs(r.design), cam_key_results(r.design, r.analysis, &r.conversion)})
+    for (const KeyFigure& f : figures)
+      EXPECT_NE(run.out.find(f.name + ": " + f.value + "\n"), std::string::npos) << f.name;
   for (const char* field : {"arcs", "degree", "control_points", "knot_count", "tolerance_mm",
                             "max_radial_error_mm", "max_normal_error_mm", "max_pressure_angle_deg",
                             "min_radius_of_curvature_mm", "undercut", "arc_list", "files"})

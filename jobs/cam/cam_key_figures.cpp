@@ -1,0 +1,105 @@
+#include "jobs/cam/cam_key_figures.h"
+
+#include <cmath>
+
+#include "src/number_text.h"
+#include "src/units.h"
+
+namespace polarform {
+
+namespace {
+
+std::string mm(double v) { return number_text(v) + " mm"; }
+
+// "|x| in time units (per radian) at θ": v·ω, a·ω², j·ω³ in m/s^k (the law is in mm/rad^k).
+std::string peak(const Extremum& e, int order, double omega, const char* time_unit,
+                 const char* radian_unit) {
+  const double in_time = e.value * std::pow(omega, order) * 1e-3;
+  return number_text(in_time) + " " + time_unit + " (" + number_text(e.value) + " " + radian_unit +
+         ") at θ = " + degrees_text(e.theta);
+}
+
+std::string at(const Extremum& e) {
+  return std::isinf(e.value) ? "none (no convex part)"
+                             : mm(e.value) + " at θ = " + degrees_text(e.theta);
+}
+
+std::string follower_text(const CamDesign& d) {
+  std::string text = std::string(follower_kind_name(d.follower.kind)) + " follower";
+  if (d.follower.kind == FollowerKind::Roller)
+    text += ", roller radius " + mm(d.follower.roller_radius);
+  if (d.follower.offset != 0.0) text += ", offset " + mm(d.follower.offset);
+  return text;
+}
+
+}  // namespace
+
+std::vector<KeyFigure> cam_design_inputs(const CamDesignStage& design) {
+  const CamDesign& d = design.project.cam;
+  std::vector<KeyFigure> out;
+  if (d.type == CamType::Plate) {
+    out.push_back({"cam", "plate cam, base radius " + mm(d.base_radius) + ", " + follower_text(d)});
+  } else {
+    out.push_back({"cam", "cylindrical cam, pitch cylinder radius " + mm(d.cylinder_radius) + ", " +
+                              follower_text(d)});
+  }
+  out.push_back({"speed", number_text(d.rpm) + " rev/min, " +
+                              (d.rotation == Rotation::CounterClockwise ? "counter-clockwise"
+                                                                        : "clockwise")});
+  for (const MotionSegment& s : design.program.segments()) {
+    const SegmentSpec& spec = s.spec();
+    std::string value = std::string(segment_kind_name(spec.kind));
+    if (spec.kind != SegmentKind::Dwell)
+      value += ", " + std::string(motion_law_name(spec.law)) + ", lift " + mm(spec.lift);
+    value += ", θ " + degrees_text(spec.start) + " to " + degrees_text(spec.end);
+    out.push_back({"segment '" + s.name() + "'", value});
+  }
+  return out;
+}
+
+std::vector<KeyFigure> cam_key_results(const CamDesignStage& design,
+                                       const CamAnalysisStage& analysis,
+                                       const CamConversionStage* conversion) {
+  const double omega = angular_speed(design.project.cam.rpm);
+  const MotionExtrema& m = analysis.motion_extrema();
+  std::vector<KeyFigure> out = {
+      {"stroke", mm(design.program.stroke())},
+      {"peak velocity", peak(m.velocity, 1, omega, "m/s", "mm/rad")},
+      {"peak acceleration", peak(m.acceleration, 2, omega, "m/s²", "mm/rad²")},
+      {"peak jerk", peak(m.jerk, 3, omega, "m/s³", "mm/rad³")}};
+  const Extremum pressure = analysis.max_pressure_angle();
+  std::string pressure_text =
+      degrees_text(pressure.value) + " at θ = " + degrees_text(pressure.theta);
+  if (!std::holds_alternative<PlateCamAnalysis>(analysis.cam)) pressure_text += " (pitch radius)";
+  if (analysis.pressure_angle_limit)
+    pressure_text += pressure.value > *analysis.pressure_angle_limit
+                         ? ", BEYOND the limit " + degrees_text(*analysis.pressure_angle_limit)
+                         : ", limit " + degrees_text(*analysis.pressure_angle_limit);
+  out.push_back({"max pressure angle", pressure_text});
+  if (const auto* p = std::get_if<PlateCamAnalysis>(&analysis.cam)) {
+    if (design.project.cam.follower.kind == FollowerKind::Roller)
+      out.push_back(
+          {"min radius of curvature, pitch curve", at(p->analysis.min_convex_pitch_radius)});
+    out.push_back({"min radius of curvature, contour", at(p->analysis.min_convex_contour_radius)});
+    std::string undercut = "none";
+    if (!p->analysis.undercut.empty()) {
+      undercut = "YES at θ";
+      for (const AngleRange& u : p->analysis.undercut)
+        undercut += " " + degrees_text(u.from) + " to " + degrees_text(u.to);
+    }
+    out.push_back({"undercut", undercut});
+  }
+  if (conversion) {
+    const PolarConversion& c = conversion->conversion;
+    out.push_back({"NURBS profile", "degree " + std::to_string(conversion->degree()) + ", " +
+                                        std::to_string(conversion->control_points()) +
+                                        " control points, " + std::to_string(c.arcs.size()) +
+                                        " base-circle arcs"});
+    out.push_back({"measured error", "max radial " + mm(c.max_radial_error) + ", max normal " +
+                                         mm(c.max_normal_error) + " (tolerance " + mm(c.tolerance) +
+                                         ")"});
+  }
+  return out;
+}
+
+}  // namespace polarform
