@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "jobs/report/report_number.h"
+
 namespace polarform {
 
 std::vector<std::string> report_file_list(const std::map<std::string, std::string>& content,
@@ -14,7 +16,9 @@ std::vector<std::string> report_file_list(const std::map<std::string, std::strin
 }
 
 std::string report_json_text(const nlohmann::ordered_json& report) {
-  return report.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
+  return rounded_for_report(report).dump(2, ' ', false,
+                                         nlohmann::ordered_json::error_handler_t::replace) +
+         "\n";
 }
 
 }  // namespace polarform

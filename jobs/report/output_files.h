@@ -15,8 +15,9 @@ std::vector<std::string> report_file_list(const std::map<std::string, std::strin
                                           const std::vector<std::string>& reports = {
                                               "report.json", "report.html"});
 
-// report.json's text: two-space indents and a final newline; bytes of the input that are not
-// UTF-8 (a Latin-1 name in a project file) are written as U+FFFD instead of failing the run.
+// report.json's text: two-space indents and a final newline, numbers to 12 significant digits
+// (report_number.h); bytes of the input that are not UTF-8 (a Latin-1 name in a project file)
+// are written as U+FFFD instead of failing the run.
 std::string report_json_text(const nlohmann::ordered_json& report);
 
 }  // namespace polarform

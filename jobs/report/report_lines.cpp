@@ -1,5 +1,6 @@
 #include "jobs/report/report_lines.h"
 
+#include "jobs/report/report_number.h"
 #include "src/number_text.h"
 
 namespace polarform {
@@ -30,7 +31,7 @@ void append(std::string& out, const nlohmann::ordered_json& value, const std::st
   } else {
     out += name + "=";
     if (value.is_number_float())
-      out += format_round_trip(value.get<double>());
+      out += format_round_trip(report_number(value.get<double>()));
     else if (value.is_string())
       out += one_line(value.get<std::string>());
     else

@@ -10,6 +10,7 @@
 #include <regex>
 #include <set>
 
+#include "jobs/report/report_number.h"
 #include "tests/support/jobs/cam_job_support.h"
 #include "tests/support/jobs/closed_forms.h"
 
@@ -60,8 +61,10 @@ TEST(CamOutputs, ReportCarriesTheIssueFieldsWithTheJobsNumbers) {
     EXPECT_EQ(j["command"], "cam");
     EXPECT_FALSE(j["polarform_version"].get<std::string>().empty());
     EXPECT_EQ(j["tolerance_mm"].get<double>(), r.project().conversion.tolerance);
-    EXPECT_EQ(j["max_radial_error_mm"].get<double>(), r.conversion.conversion.max_radial_error);
-    EXPECT_EQ(j["max_normal_error_mm"].get<double>(), r.conversion.conversion.max_normal_error);
+    EXPECT_EQ(j["max_radial_error_mm"].get<double>(),
+              report_number(r.conversion.conversion.max_radial_error));
+    EXPECT_EQ(j["max_normal_error_mm"].get<double>(),
+              report_number(r.conversion.conversion.max_normal_error));
     EXPECT_LE(j["max_radial_error_mm"].get<double>(), j["tolerance_mm"].get<double>());
     EXPECT_LE(j["max_normal_error_mm"].get<double>(), j["tolerance_mm"].get<double>());
     EXPECT_GT(j["max_radial_error_mm"].get<double>(), 0.0);
@@ -95,7 +98,7 @@ TEST(CamOutputs, ReportCarriesTheIssueFieldsWithTheJobsNumbers) {
     const CamDesign& d = r.project().cam;
     EXPECT_EQ(j["cam"]["rpm"].get<double>(), d.rpm);
     EXPECT_EQ(j["cam"]["base_radius_mm"].get<double>(), d.base_radius);
-    EXPECT_NEAR(j["speed_rad_per_s"].get<double>(), 2 * kPi * d.rpm / 60, 1e-12);
+    EXPECT_EQ(j["speed_rad_per_s"].get<double>(), report_number(2 * kPi * d.rpm / 60));
     ASSERT_EQ(j["segments"].size(), d.segments.size());
     EXPECT_EQ(j["segments"][0]["start_deg"].get<double>(), 0.0);
     EXPECT_NEAR(j["segments"].back()["end_deg"].get<double>(), 360.0, 1e-12);
@@ -106,9 +109,9 @@ TEST(CamOutputs, ReportCarriesTheIssueFieldsWithTheJobsNumbers) {
     if (r.plate()) {
       EXPECT_EQ(j["cam"]["type"], "plate");
       EXPECT_EQ(j["max_pressure_angle_deg"].get<double>(),
-                plate_analysis(r).max_pressure_angle.value * kDegreesPerRadian);
+                report_number(plate_analysis(r).max_pressure_angle.value * kDegreesPerRadian));
       EXPECT_EQ(j["min_radius_of_curvature_mm"].get<double>(),
-                plate_analysis(r).min_convex_contour_radius.value);
+                report_number(plate_analysis(r).min_convex_contour_radius.value));
       EXPECT_GT(j["min_radius_of_curvature_mm"].get<double>(), 0.0);
       EXPECT_TRUE(j["undercut_ranges_deg"].empty());
       const json& limited = j["degree_limited"];

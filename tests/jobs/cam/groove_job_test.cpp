@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "jobs/report/report_number.h"
 #include "src/error.h"
 #include "tests/support/jobs/cam_job_support.h"
 
@@ -64,7 +65,7 @@ TEST(GrooveJob, FilesAndReportCarryBothWalls) {
     EXPECT_EQ(w["degree_v"].get<int>(), g.surface.degree_v());
     EXPECT_EQ(w["control_points_u"].get<int>(), g.surface.size_u());
     EXPECT_EQ(w["control_points_v"].get<int>(), g.surface.size_v());
-    EXPECT_EQ(w["max_error_mm"].get<double>(), g.max_error);
+    EXPECT_EQ(w["max_error_mm"].get<double>(), report_number(g.max_error));
     EXPECT_LE(w["max_error_mm"].get<double>(), j["groove"]["tolerance_mm"].get<double>());
   }
   EXPECT_NE(slurp(run.dir / "report.html").find("Groove walls"), std::string::npos);

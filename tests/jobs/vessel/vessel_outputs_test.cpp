@@ -1,12 +1,14 @@
 // The files of the vessel job: every output exists with its format's header, report.json holds the
 // documented fields with the job's numbers, the CSVs carry units, and a bad project or design
 // leaves the output directory without new files.
+#include "jobs/vessel/vessel_outputs.h"
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
-#include "jobs/vessel/vessel_outputs.h"
+#include "jobs/report/report_number.h"
 #include "src/error.h"
 #include "tests/support/jobs/vessel_job_support.h"
 
@@ -114,7 +116,7 @@ TEST(VesselOutputs, ReportJsonHasTheDocumentedFields) {
   EXPECT_NEAR(j["head"]["depth_mm"].get<double>(), 500.0, 1e-7);
   EXPECT_NEAR(j["head"]["junction_curvature_per_mm"].get<double>(), 1 / 500.0, 1e-12);
   EXPECT_EQ(j["tolerance_mm"], 1e-3);
-  EXPECT_EQ(j["max_radial_error_mm"], r.converted.conversion.max_radial_error);
+  EXPECT_EQ(j["max_radial_error_mm"], report_number(r.converted.conversion.max_radial_error));
   EXPECT_LE(j["max_radial_error_mm"].get<double>(), 1e-3);
   EXPECT_EQ(j["degree"], 9);
   EXPECT_EQ(j["control_points"], r.converted.conversion.curve.size());
