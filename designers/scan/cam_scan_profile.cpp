@@ -191,7 +191,9 @@ CamProfile extract_cam_profile(const Eigen::Matrix3Xd& points, const CamProfileO
     why << (o.axis          ? "given"
             : cloud.snapped ? "2D scan in the plane z = const"
                             : "2D scan: normal of its best-fit plane")
-        << " (points within " << cloud.rms_distance << " mm rms of the plane)";
+        << (cloud.rms_distance > 0
+                ? " (points within " + number_text(cloud.rms_distance) + " mm rms of the plane)"
+                : std::string(" (every point exactly in the plane)"));
     p.axis_reason = why.str();
   }
   p.plane.axes = fit_plane(points, k).frame.axes;

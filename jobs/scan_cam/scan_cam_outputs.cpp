@@ -92,8 +92,8 @@ std::string html_report(const ScanCamJobResult& r, const json& report,
   std::vector<std::pair<std::string, std::string>> key = {
       {"scan", std::string(s.profile.three_d ? "3D" : "2D") + ", " + std::to_string(r.points) +
                    " points, " + std::to_string(s.contour.cols()) + " on the contour"},
-      {"profile noise σ̂", format_trimmed(s.contour_noise * 1e3, 3) + " µm"},
-      {"displacement noise σ̂", format_trimmed(s.displacement.noise * 1e3, 3) + " µm"},
+      {"profile noise σ̂", number_text(s.contour_noise * 1e3) + " µm"},
+      {"displacement noise σ̂", number_text(s.displacement.noise * 1e3) + " µm"},
       {"recovered s standard error",
        format_trimmed(s.displacement.standard_error * 1e3, 3) + " µm"},
       {"base radius", format_trimmed(s.base_radius, 4) + " mm"},
@@ -105,7 +105,7 @@ std::string html_report(const ScanCamJobResult& r, const json& report,
     key.emplace_back("max |normal deviation|",
                      format_trimmed(r.comparison->normal_stats.max * 1e3, 3) + " µm");
     key.emplace_back("rms normal deviation",
-                     format_trimmed(r.comparison->normal_stats.rms * 1e3, 3) + " µm");
+                     number_text(r.comparison->normal_stats.rms * 1e3) + " µm");
   }
   if (r.tolerance)
     key.emplace_back("tolerance ±" + format_trimmed(*r.tolerance * 1e3, 3) + " µm",
@@ -121,13 +121,14 @@ std::string html_report(const ScanCamJobResult& r, const json& report,
                           ? ", roller radius " + format_trimmed(s.follower.roller_radius, 4) + " mm"
                           : std::string()) +
                      "; rotation " + std::string(rotation_name(s.rotation)) + ".");
-  html.add_paragraph(
-      "Smoothing: the displacement is a periodic degree-" +
-      std::to_string(s.displacement.height.degree()) + " B-spline whose fairness weight λ = " +
-      format_trimmed(s.displacement.lambda, 6) + " was chosen by generalized cross-validation (" +
-      format_trimmed(s.displacement.dof, 1) + " effective parameters). The noise floor of the " +
-      "samples is σ̂ = " + format_trimmed(s.displacement.noise * 1e3, 3) +
-      " µm; differences below it are not resolved.");
+  html.add_paragraph("Smoothing: the displacement is a periodic degree-" +
+                     std::to_string(s.displacement.height.degree()) +
+                     " B-spline whose fairness weight λ = " + number_text(s.displacement.lambda) +
+                     " was chosen by generalized cross-validation (" +
+                     format_trimmed(s.displacement.dof, 1) +
+                     " effective parameters). The noise floor of the " +
+                     "samples is σ̂ = " + number_text(s.displacement.noise * 1e3) +
+                     " µm; differences below it are not resolved.");
   html.add_heading("Profile");
   html.add_svg(svgs.at("profile.svg"),
                "The scanned points and the fitted NURBS profile in the cam frame.");

@@ -73,8 +73,7 @@ std::string html_report(const VesselJobResult& r, const VesselOutputOptions& o, 
   html.add_key_figures(
       {{"iterations", std::to_string(s.synthesis.iterations)},
        {"max |κ residual|",
-        format_trimmed(report["synthesis"]["max_abs_residual_per_mm"].get<double>() * 1e3, 6) +
-            " 1/m"},
+        number_text(report["synthesis"]["max_abs_residual_per_mm"].get<double>()) + " 1/mm"},
        {"max condition violation", format_trimmed(s.synthesis.max_violation, 9)},
        {"head depth", format_trimmed(s.depth, 3) + " mm"},
        {"tolerance", micrometres(c.tolerance)},
@@ -97,10 +96,10 @@ std::string html_report(const VesselJobResult& r, const VesselOutputOptions& o, 
                                              preset_note + "; below, the residual at each target.");
   std::vector<std::vector<std::string>> targets;
   for (const TargetResidual& t : s.synthesis.targets)
-    targets.push_back({format_trimmed(t.theta * kDegreesPerRadian, 4),
-                       format_trimmed(t.target * 1e3, 6), format_trimmed(t.achieved * 1e3, 6),
-                       format_trimmed(t.residual() * 1e3, 6), format_trimmed(t.weight, 4)});
-  html.add_table({"θ [deg]", "target κ [1/m]", "achieved κ [1/m]", "residual [1/m]", "weight"},
+    targets.push_back({format_trimmed(t.theta * kDegreesPerRadian, 4), number_text(t.target),
+                       number_text(t.achieved), number_text(t.residual()),
+                       format_trimmed(t.weight, 4)});
+  html.add_table({"θ [deg]", "target κ [1/mm]", "achieved κ [1/mm]", "residual [1/mm]", "weight"},
                  targets);
   std::vector<std::vector<std::string>> conditions;
   for (const ConditionViolation& v : s.synthesis.conditions)

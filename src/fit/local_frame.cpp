@@ -60,7 +60,12 @@ Eigen::Vector3d principal_across(const Eigen::Matrix3Xd& x, const Eigen::Vector3
   return es.eigenvectors().col(2);
 }
 
-std::string signs(bool same) { return same ? "=" : "!="; }
+// The signature columns k and K of Bae 2002, Table 4.1, in words.
+std::string signature_words(const QuadricClassification& c) {
+  const auto sign = [](bool same) { return same ? "share one sign" : "differ in sign"; };
+  return std::string("the non-zero eigenvalues of Qu ") + sign(c.k_same) + ", those of Q " +
+         sign(c.K_same);
+}
 
 }  // namespace
 
@@ -89,8 +94,7 @@ FrameEstimate estimate_frame(const Eigen::Matrix3Xd& points, const FrameOptions&
     const QuadricFit qf = fit_quadric(points, opt.quadric);
     const QuadricClassification& c = qf.classification;
     why << "best-fit quadric: " << to_string(c.type) << " (rank Qu " << c.rank_Qu << ", rank Q "
-        << c.rank_Q << ", k " << signs(c.k_same) << ", K " << signs(c.K_same) << ", RMS distance "
-        << qf.rms_distance << ")";
+        << c.rank_Q << "; " << signature_words(c) << "; RMS distance " << qf.rms_distance << ")";
     if (!defines_frame(c.type))
       throw InputError("local frame: " + why.str() +
                        " defines no centre and axis (Bae 2002, Sec. 4.3 needs an ellipsoid, "

@@ -7,12 +7,15 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <numbers>
 #include <set>
+#include <sstream>
 #include <string>
 
 #include "jobs/scan_cam/scan_cam_outputs.h"
 #include "src/error.h"
+#include "src/number_text.h"
 #include "src/units.h"
 #include "tests/support/jobs/job_test_support.h"
 
@@ -88,6 +91,23 @@ TEST(ScanCamJob, WithoutNominalTheFollowerComesFromTheOptions) {
   }
   EXPECT_NEAR(lo, 0.0, 1e-5);  // measured from its own lowest level
   EXPECT_NEAR(hi, 20.0, 0.005);
+}
+
+// Small numbers keep their digits: the smoothing weight λ is stated to 6 significant digits, never
+// rounded to "0" by fixed decimals.
+TEST(ScanCamJob, ReportStatesSmallNumbersWithTheirDigits) {
+  ScanCamJobOptions o;
+  o.nominal = example("cams/roller.xml");
+  const ScanCamJobResult r = run_scan_cam_job(example("scans/cam_profile.xyz"), o);
+  const auto dir = scratch_dir();
+  write_scan_cam_outputs(r, dir);
+  std::ifstream in(dir / "report.html");
+  std::stringstream html;
+  html << in.rdbuf();
+  ASSERT_LT(r.scan.displacement.lambda, 1e-3);
+  EXPECT_NE(html.str().find("fairness weight λ = " + number_text(r.scan.displacement.lambda) +
+                            " was chosen"),
+            std::string::npos);
 }
 
 TEST(ScanCamJob, BadOptionCombinationsAreRefused) {

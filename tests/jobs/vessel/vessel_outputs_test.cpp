@@ -66,6 +66,17 @@ TEST(VesselOutputs, EveryFileWithItsFormatHeader) {
   EXPECT_EQ(figures, 3u);
 }
 
+// Curvature is stated in 1/mm, the unit of every other length, in the HTML as in report.json.
+TEST(VesselOutputs, HtmlStatesCurvatureInPerMillimetre) {
+  const std::filesystem::path dir = scratch_dir("kappa");
+  design_to(example("custom_curvature.xml"), dir);
+  const std::string html = read_text(dir / "report.html");
+  EXPECT_THAT(html, HasSubstr("target κ [1/mm]"));
+  EXPECT_THAT(html, HasSubstr("achieved κ [1/mm]"));
+  EXPECT_EQ(html.find("1/m]"), std::string::npos);
+  EXPECT_EQ(html.find(" 1/m<"), std::string::npos);
+}
+
 TEST(VesselOutputs, CsvHeadersCarryUnitsAndRowsMatchTheSamples) {
   const std::filesystem::path dir = scratch_dir("out");
   design_to(example("ellipsoidal_2_1.xml"), dir);

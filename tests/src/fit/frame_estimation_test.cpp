@@ -46,6 +46,18 @@ Errors measure(double nm_over_r) {
   return e;
 }
 
+// The frame's reason states the quadric's signature in words (Bae 2002, Table 4.1's k and K):
+// a sphere's Qu eigenvalues share one sign, those of its 4 x 4 Q do not.
+TEST(FrameEstimation, ReasonWritesTheSignatureInWords) {
+  const Eigen::Matrix3Xd s =
+      test::spherical_cloud([](double, double) { return R; }, 2000, 0, kPi, 0, 2 * kPi, 1);
+  const std::string reason = estimate_frame(s).reason;
+  EXPECT_NE(reason.find("the non-zero eigenvalues of Qu share one sign, those of Q differ in sign"),
+            std::string::npos)
+      << reason;
+  EXPECT_EQ(reason.find("!="), std::string::npos) << reason;
+}
+
 TEST(FrameEstimation, OriginAndAxisErrorsGrowWithTheNoiseAsInFig43) {
   const Errors lo = measure(0.01), hi = measure(0.1);
   RecordProperty("sphere_origin_pct_at_0.01", test::sci(lo.sphere));
