@@ -178,6 +178,18 @@ void read_conversion(const XmlElementReader& r, CamProject& p) {
   }
 }
 
+// Every length of a design read in another unit, in mm: the jobs work in mm only.
+void to_millimetres(CamDesign& d, double unit) {
+  for (double* length : {&d.base_radius, &d.follower.roller_radius, &d.follower.offset,
+                         &d.cylinder_radius, &d.z0, &d.groove_depth})
+    *length *= unit;
+  for (SegmentSpec& s : d.segments) {
+    s.lift *= unit;
+    for (EndpointDerivatives* e : {&s.at_start, &s.at_end})
+      for (double* derivative : {&e->velocity, &e->acceleration, &e->jerk}) *derivative *= unit;
+  }
+}
+
 }  // namespace
 
 CamProject parse_cam_project(const std::string& text, const std::string& file,
@@ -193,6 +205,8 @@ CamProject parse_cam_project(const std::string& text, const std::string& file,
   std::vector<UnknownName> unknown;
   const XmlElementReader cam_reader(cam, file);
   p.cam = read_cam(cam_reader, file, unknown);
+  const double unit = read_length_unit(root, cam_reader);
+  to_millimetres(p.cam, unit);
   if (const auto limit = cam_reader.optional_number("pressure-angle-limit")) {
     if (!(*limit > 0 && *limit < 90))
       cam_reader.fail("pressure-angle-limit", "an angle in (0, 90) degrees");
@@ -202,6 +216,7 @@ CamProject parse_cam_project(const std::string& text, const std::string& file,
   if (const XMLElement* conversion = root.child("conversion")) {
     const XmlElementReader r(conversion, file);
     read_conversion(r, p);
+    if (r.has("tolerance")) p.conversion.tolerance *= unit;
     collect(r, unknown);
   }
   collect(root, unknown);

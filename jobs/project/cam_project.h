@@ -29,7 +29,7 @@ struct CamProject {
 };
 
 // Reads
-//   <polarform version="1">
+//   <polarform version="1" units="mm|inch">   (units: of every length; also on <cam>)
 //     <cam type="plate|cylindrical" follower="knife-edge|roller|flat-faced" base-radius="mm"
 //          roller-radius="mm" offset="mm" rotation="ccw|cw" rpm="1/min" cylinder-radius="mm"
 //          z0="mm" groove-depth="mm, walls at cylinder-radius ± depth/2 (cylindrical)"
@@ -43,7 +43,8 @@ struct CamProject {
 //                 alpha="minimax|printed" max-degree=""/>
 //   </polarform>
 // `from` defaults to the previous segment's `to` (0 for the first); a return's `lift` defaults to
-// the level reached so far. Throws InputError "file:line: <element> attribute 'x': expected …",
+// the level reached so far. A file in inches is converted to mm as it is read (and saved in mm).
+// Throws InputError "file:line: <element> attribute 'x': expected …",
 // and for unknown attributes or elements, which UnknownNames::warn turns into warnings.
 CamProject read_cam_project(const std::filesystem::path& file, std::vector<std::string>& warnings,
                             UnknownNames policy = UnknownNames::refuse);

@@ -101,10 +101,32 @@ SynthesisSettings read_synthesis(const XmlElementReader& r) {
   return s;
 }
 
-void read_vessel(const XMLElement* e, Reader& reader, VesselProject& p) {
+// Every length of a design read in another unit, in mm (κ in 1/mm): the jobs work in mm only.
+void to_millimetres(VesselProject& p, double unit) {
+  VesselDesign& d = p.design;
+  for (double* length : {&d.radius, &d.length, &d.thickness}) *length *= unit;
+  for (CurvatureEntry& c : p.curvatures) c.value = c.is_radius ? c.value * unit : c.value / unit;
+  for (std::optional<EndCondition>* end : {&d.end_a, &d.end_b})
+    if (*end)
+      for (std::optional<double>* v : {&(*end)->r, &(*end)->dr, &(*end)->ddr})
+        if (*v) **v *= unit;
+  if (d.preset) d.preset->crown *= unit, d.preset->knuckle *= unit;
+}
+
+// The <vessel> element; `root` is the <polarform> root (null when <vessel> is the root), whose
+// units apply too. Returns the length unit in mm.
+double read_vessel(const XMLElement* e, const XmlElementReader* root, Reader& reader,
+                   VesselProject& p) {
+  double unit = 1.0;
   reader.visit(e, [&](const XmlElementReader& r) {
+    unit = read_length_unit(root ? *root : r, r);
     VesselDesign& d = p.design;
-    d.radius = r.positive("radius");
+    if (r.has("diameter")) {  // what drawings give; saved as the radius
+      if (r.has("radius")) r.fail("diameter", "either radius or diameter, not both");
+      d.radius = r.positive("diameter") / 2;
+    } else {
+      d.radius = r.positive("radius");
+    }
     d.length = r.positive("length");
     d.thickness = r.positive("thickness");
     d.pressure = r.positive("pressure");
@@ -136,6 +158,8 @@ void read_vessel(const XMLElement* e, Reader& reader, VesselProject& p) {
     if (p.curvatures.empty() && !d.preset)
       throw InputError(r.where() + ": expected <curvature> elements or a <head preset>");
   });
+  to_millimetres(p, unit);
+  return unit;
 }
 
 VesselProject read_document(const XmlDocument& doc, std::vector<std::string>& warnings,
@@ -144,7 +168,7 @@ VesselProject read_document(const XmlDocument& doc, std::vector<std::string>& wa
   Reader reader(doc.file());
   const XMLElement* root = doc.root();
   if (std::string(root->Name()) == "vessel") {
-    read_vessel(root, reader, p);
+    read_vessel(root, nullptr, reader, p);
     settle_unknown_names(reader.unknown(), policy, warnings);
     return p;
   }
@@ -154,10 +178,10 @@ VesselProject read_document(const XmlDocument& doc, std::vector<std::string>& wa
     check_project_version(r, policy, warnings);
     const XMLElement* vessel = r.child("vessel");
     if (!vessel) throw InputError(r.where() + ": expected a <vessel> element");
-    read_vessel(vessel, reader, p);
+    const double unit = read_vessel(vessel, &r, reader, p);
     if (const XMLElement* conversion = r.child("conversion"))
       reader.visit(conversion, [&](const XmlElementReader& cr) {
-        p.tolerance = cr.positive("tolerance", p.tolerance);
+        if (cr.has("tolerance")) p.tolerance = cr.positive("tolerance") * unit;
         if (p.tolerance < kMinTolerance)
           cr.fail("tolerance", "a tolerance >= " + number(kMinTolerance) + " mm");
       });

@@ -224,6 +224,19 @@ void check_project_version(const XmlElementReader& root, UnknownNames policy,
                      " is newer than this polarform's (1): read leniently");
 }
 
+double read_length_unit(const XmlElementReader& root, const XmlElementReader& design) {
+  const auto unit = [](const XmlElementReader& r) {
+    return r.choice("units", {"mm", "inch"}, "mm") == "inch" ? 25.4 : 1.0;
+  };
+  const double on_root = unit(root);
+  if (design.element() == root.element()) return on_root;
+  const double on_design = unit(design);
+  if (root.has("units") && design.has("units") && on_root != on_design)
+    design.fail("units", "the units of the root element <" + std::string(root.element()->Name()) +
+                             ">, or no units here");
+  return design.has("units") ? on_design : on_root;
+}
+
 void settle_unknown_names(const std::vector<UnknownName>& unknown, UnknownNames policy,
                           std::vector<std::string>& warnings) {
   const auto known = [](const UnknownName& u) {

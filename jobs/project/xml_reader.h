@@ -88,6 +88,10 @@ class XmlElementReader {
 void check_project_version(const XmlElementReader& root, UnknownNames policy,
                            std::vector<std::string>& warnings);
 
+// The project's length unit: units="mm|inch" on the root or on the design element (`design`, the
+// same if given on both), as millimetres per unit: 1 or 25.4. Every length of the file is in it.
+double read_length_unit(const XmlElementReader& root, const XmlElementReader& design);
+
 // Settles the unknown names a reader collected: throws one InputError listing them all (refuse)
 // or appends "… ignored (known here: …)" to warnings (warn).
 void settle_unknown_names(const std::vector<UnknownName>& unknown, UnknownNames policy,

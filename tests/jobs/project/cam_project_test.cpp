@@ -79,6 +79,49 @@ TEST(CamProject, PressureAngleLimitIsReadInDegreesAndSaved) {
         << bad;
 }
 
+// A project in inches is converted to mm as it is read: every length, the endpoint derivatives
+// (mm/rad^k) and a given tolerance; the default tolerance stays 1 µm; the angles and the speed
+// are no lengths.
+TEST(CamProject, InchProjectsAreReadInMillimetres) {
+  std::vector<std::string> warnings;
+  const std::string segments =
+      "<segment kind=\"rise\" law=\"polynomial\" lift=\"1\" to=\"180\">"
+      "<start v=\"0.5\"/><end v=\"0.25\" a=\"2\"/></segment>\n"
+      "<segment kind=\"return\" law=\"cycloidal\" to=\"360\"/>\n";
+  const CamProject inch = parse_cam_project(
+      cam("units=\"inch\" follower=\"roller\" base-radius=\"2\" roller-radius=\"0.5\" "
+          "offset=\"0.25\" rpm=\"120\"",
+          segments),
+      "cam.xml", warnings);
+  EXPECT_DOUBLE_EQ(inch.cam.base_radius, 50.8);
+  EXPECT_DOUBLE_EQ(inch.cam.follower.roller_radius, 12.7);
+  EXPECT_DOUBLE_EQ(inch.cam.follower.offset, 6.35);
+  EXPECT_DOUBLE_EQ(inch.cam.rpm, 120.0);
+  EXPECT_DOUBLE_EQ(inch.cam.segments[0].lift, 25.4);
+  EXPECT_DOUBLE_EQ(inch.cam.segments[1].lift, 25.4);  // the level reached, in mm
+  EXPECT_DOUBLE_EQ(inch.cam.segments[0].at_start.velocity, 12.7);
+  EXPECT_DOUBLE_EQ(inch.cam.segments[0].at_end.acceleration, 50.8);
+  EXPECT_DOUBLE_EQ(inch.cam.segments[0].end * kDegreesPerRadian, 180.0);
+  EXPECT_DOUBLE_EQ(inch.conversion.tolerance, 1e-3);
+  // On the root, with a tolerance: the same conversion; saved in mm, the same project again.
+  const std::string root_inch =
+      "<polarform version=\"1\" units=\"inch\">\n<cam follower=\"roller\" base-radius=\"2\" "
+      "roller-radius=\"0.5\" offset=\"0.25\" rpm=\"120\">\n" +
+      segments + "</cam>\n<conversion tolerance=\"0.0001\"/>\n</polarform>\n";
+  const CamProject root = parse_cam_project(root_inch, "cam.xml", warnings);
+  EXPECT_TRUE(root.cam == inch.cam);
+  EXPECT_DOUBLE_EQ(root.conversion.tolerance, 0.00254);
+  EXPECT_TRUE(parse_cam_project(cam_project_xml(root), "saved.xml", warnings) == root);
+  EXPECT_TRUE(warnings.empty());
+  EXPECT_NE(error_of(cam("units=\"furlong\" " + kPlate, kSegments)).find("attribute 'units'"),
+            std::string::npos);
+  std::string conflict = root_inch;
+  conflict.replace(conflict.find("<cam "), 5, "<cam units=\"mm\" ");
+  EXPECT_NE(error_of(conflict).find("attribute 'units': expected the units of the root element"),
+            std::string::npos)
+      << error_of(conflict);
+}
+
 // The tests of designers/ build the examples in code: every file reads to exactly that design
 // (segment starts, given in a file as the previous end in degrees, to rounding).
 TEST(CamProject, ExamplesAreTheDesignsTheDesignerTestsBuild) {
@@ -181,10 +224,10 @@ TEST(CamProject, BrokenFilesGiveSpecificErrors) {
 }
 
 TEST(CamProject, UnknownNamesAreErrorsNamingLineAndKnownNames) {
-  // The cases: units that are not read and an oscillating follower that does not exist
-  // would build another cam than the one written.
-  const std::string inch = error_of(cam(kPlate + " units=\"inch\"", kSegments));
-  EXPECT_NE(inch.find("cam.xml:2: unknown attribute 'units' on <cam> (known here: "),
+  // A misspelt unit and an oscillating follower that does not exist would build another cam
+  // than the one written.
+  const std::string inch = error_of(cam(kPlate + " unit=\"inch\"", kSegments));
+  EXPECT_NE(inch.find("cam.xml:2: unknown attribute 'unit' on <cam> (known here: "),
             std::string::npos)
       << inch;
   EXPECT_NE(inch.find("base-radius"), std::string::npos) << inch;

@@ -181,6 +181,47 @@ TEST(VesselProject, BadValuesNameFileLineAndAttribute) {
   for (const auto& [xml, expected] : cases) EXPECT_EQ(error_of(xml), expected) << xml;
 }
 
+// A vessel in inches: lengths, radii of curvature and end conditions to mm, κ to 1/mm, a given
+// tolerance to mm; the pressure stays in MPa.
+TEST(VesselProject, InchProjectsAreReadInMillimetres) {
+  std::vector<std::string> warnings;
+  const VesselProject p = parse_vessel_project(
+      "<polarform version=\"1\" units=\"inch\">\n<vessel radius=\"20\" length=\"40\" "
+      "thickness=\"0.5\" pressure=\"2\">\n<curvature theta=\"20\" kappa=\"0.05\"/>\n"
+      "<curvature theta=\"90\" radius=\"10\"/>\n<end at=\"A\" r=\"20\" dr=\"0\" ddr=\"1\"/>\n"
+      "<head preset=\"torispherical\" crown=\"20\" knuckle=\"2\"/>\n</vessel>\n"
+      "<conversion tolerance=\"0.0001\"/>\n</polarform>\n",
+      "t.xml", warnings);
+  EXPECT_DOUBLE_EQ(p.design.radius, 508.0);
+  EXPECT_DOUBLE_EQ(p.design.length, 1016.0);
+  EXPECT_DOUBLE_EQ(p.design.thickness, 12.7);
+  EXPECT_DOUBLE_EQ(p.design.pressure, 2.0);
+  EXPECT_DOUBLE_EQ(p.curvatures[0].value, 0.05 / 25.4);
+  EXPECT_DOUBLE_EQ(p.curvatures[1].value, 254.0);
+  EXPECT_DOUBLE_EQ(*p.design.end_a->r, 508.0);
+  EXPECT_DOUBLE_EQ(*p.design.end_a->ddr, 25.4);
+  EXPECT_DOUBLE_EQ(p.design.preset->crown, 508.0);
+  EXPECT_DOUBLE_EQ(p.design.preset->knuckle, 50.8);
+  EXPECT_DOUBLE_EQ(p.tolerance, 0.00254);
+  EXPECT_TRUE(warnings.empty());
+  // Drawings give the diameter: accepted, never together with the radius; a name that is not
+  // accepted is refused with the accepted ones.
+  const std::string head = "<head preset=\"hemispherical\"/>\n";
+  EXPECT_DOUBLE_EQ(parse_vessel_project(vessel("diameter=\"1000\" length=\"1500\" thickness=\"10\" "
+                                               "pressure=\"2\"",
+                                               head),
+                                        "t.xml", warnings)
+                       .design.radius,
+                   500.0);
+  EXPECT_NE(error_of(vessel(kVessel + " diameter=\"1000\"", head))
+                .find("attribute 'diameter': expected either radius or diameter, not both"),
+            std::string::npos);
+  EXPECT_NE(error_of(vessel(kVessel + " dia=\"1000\"", head))
+                .find("unknown attribute 'dia' on <vessel> (known here: diameter, length, "),
+            std::string::npos)
+      << error_of(vessel(kVessel + " dia=\"1000\"", head));
+}
+
 TEST(VesselProject, UnknownNamesAreErrorsOrLenientWarnings) {
   const std::string xml =
       "<polarform version=\"1\">\n<vessel " + kVessel +
