@@ -8,7 +8,8 @@
 
 namespace polarform {
 
-// text with & < > " ' replaced by entities; safe in element content and in attribute values.
+// text with & < > " ' replaced by entities and tab, LF, CR by character references (so that they
+// survive attribute-value normalisation); safe in element content and in attribute values.
 std::string xml_escape(std::string_view text);
 
 }  // namespace polarform

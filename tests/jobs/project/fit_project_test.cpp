@@ -66,6 +66,16 @@ TEST(FitProject, EveryFieldRoundTripsExactly) {
   fs::remove(file);
 }
 
+// Found by fuzzing: a scan name holding line breaks (a CR, which XML readers turn into LF) must
+// read back as written.
+TEST(FitProject, ScanNamesWithLineBreaksRoundTrip) {
+  FitProject p;
+  p.scan = "odd\rname\n\twith & <breaks>.xyz";
+  const FitProject back = parse(fit_project_xml(p));
+  EXPECT_EQ(back.scan, p.scan);
+  EXPECT_EQ(fit_project_xml(back), fit_project_xml(p));
+}
+
 TEST(FitProject, MinimalFileTakesTheDefaults) {
   const FitProject p = parse("<fit scan=\"a.xyz\"/>");
   EXPECT_EQ(p.scan, fs::path("a.xyz"));
