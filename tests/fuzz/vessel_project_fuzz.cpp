@@ -1,28 +1,20 @@
 // libFuzzer harness of the vessel project reader parse_vessel_project
-// (jobs/project/vessel_project.h). A project it accepts must survive the writer: vessel_project_xml
-// of it parses again and writes the same text (the writer and the reader agree on every value they
-// let through).
+// (jobs/project/vessel_project.h), with the writer round trip of tests/fuzz/project_check.h.
 #include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "jobs/project/vessel_project.h"
-#include "tests/fuzz/fuzz_check.h"
+#include "tests/fuzz/project_check.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace polarform;
-  const std::string text(fuzz::bytes_of(data, size));
-  std::vector<std::string> warnings;
-  std::string written;
-  if (!fuzz::accepted(
-          [&] { written = vessel_project_xml(parse_vessel_project(text, "fuzz.xml", warnings)); }))
-    return 0;
-  std::string rewritten;
-  if (!fuzz::accepted([&] {
-        rewritten = vessel_project_xml(parse_vessel_project(written, "fuzz.xml", warnings));
-      }))
-    fuzz::finding("the reader refuses what the writer wrote of an accepted project");
-  fuzz::require(rewritten == written, "writing a re-read project changes it");
+  fuzz::check_project_reader(
+      std::string(fuzz::bytes_of(data, size)),
+      [](const std::string& text, const std::string& file, std::vector<std::string>& warnings) {
+        return parse_vessel_project(text, file, warnings);
+      },
+      [](const auto& project) { return vessel_project_xml(project); });
   return 0;
 }
