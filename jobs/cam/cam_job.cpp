@@ -205,6 +205,10 @@ Extremum CamAnalysisStage::max_pressure_angle() const {
   return worst;
 }
 
+bool CamAnalysisStage::pressure_angle_within_limit() const {
+  return !pressure_angle_limit || max_pressure_angle().value <= *pressure_angle_limit;
+}
+
 const MotionExtrema& CamAnalysisStage::motion_extrema() const {
   if (const auto* p = std::get_if<PlateCamAnalysis>(&cam)) return p->analysis.motion;
   return std::get<CylindricalCamAnalysis>(cam).motion;
@@ -232,7 +236,7 @@ CamAnalysisStage analyse_cam(const CamDesignStage& design, const CamJobOptions& 
                                ? design.project.pressure_angle_limit
                                : default_pressure_angle_limit(design.project.cam);
   const Extremum worst = a.max_pressure_angle();
-  if (a.pressure_angle_limit && worst.value > *a.pressure_angle_limit)
+  if (!a.pressure_angle_within_limit())
     a.warnings.push_back("max pressure angle " + degrees_text(worst.value) +
                          " at θ = " + degrees_text(worst.theta) + " exceeds the limit " +
                          degrees_text(*a.pressure_angle_limit) +

@@ -91,6 +91,8 @@ struct CamAnalysisStage {
   std::optional<double> pressure_angle_limit;  // rad: the project's, or the follower's default
   std::vector<std::string> warnings;           // a pressure angle beyond the limit
 
+  // Whether the largest |pressure angle| stays within the limit (true without a limit).
+  bool pressure_angle_within_limit() const;
   // The largest |pressure angle| and where (rad): the plate cam's analysis, or the cylindrical
   // cam's grid maximum.
   Extremum max_pressure_angle() const;

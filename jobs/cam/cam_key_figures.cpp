@@ -72,7 +72,7 @@ std::vector<KeyFigure> cam_key_results(const CamDesignStage& design,
       degrees_text(pressure.value) + " at θ = " + degrees_text(pressure.theta);
   if (!std::holds_alternative<PlateCamAnalysis>(analysis.cam)) pressure_text += " (pitch radius)";
   if (analysis.pressure_angle_limit)
-    pressure_text += pressure.value > *analysis.pressure_angle_limit
+    pressure_text += !analysis.pressure_angle_within_limit()
                          ? ", BEYOND the limit " + degrees_text(*analysis.pressure_angle_limit)
                          : ", limit " + degrees_text(*analysis.pressure_angle_limit);
   out.push_back({"max pressure angle", pressure_text});

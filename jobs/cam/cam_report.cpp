@@ -99,7 +99,7 @@ void add_analysis_fields(json& j, const CamDesignStage& d, const CamAnalysisStag
   }
   if (r.pressure_angle_limit) {
     j["pressure_angle_limit_deg"] = *r.pressure_angle_limit * kDegreesPerRadian;
-    j["pressure_angle_within_limit"] = r.max_pressure_angle().value <= *r.pressure_angle_limit;
+    j["pressure_angle_within_limit"] = r.pressure_angle_within_limit();
   } else {
     j["pressure_angle_limit_deg"] = nullptr;  // a flat-faced follower: fixed by its geometry
   }

@@ -43,11 +43,6 @@ double degrees_for(double radians) {
   return d;
 }
 
-void collect(const XmlElementReader& r, std::vector<UnknownName>& unknown) {
-  const std::vector<UnknownName> u = r.unknown_names();
-  unknown.insert(unknown.end(), u.begin(), u.end());
-}
-
 // The constraint children of a polynomial or B-spline segment; order = highest derivative given.
 void read_constraints(const XmlElementReader& seg, SegmentSpec& spec, const std::string& file,
                       std::vector<UnknownName>& unknown) {
@@ -61,7 +56,7 @@ void read_constraints(const XmlElementReader& seg, SegmentSpec& spec, const std:
     if (r.has("v")) d.velocity = r.number("v"), order = std::max(order, 1);
     if (r.has("a")) d.acceleration = r.number("a"), order = std::max(order, 2);
     if (r.has("j")) d.jerk = r.number("j"), order = std::max(order, 3);
-    collect(r, unknown);
+    r.collect_unknown_names(unknown);
   };
   read_end(start, spec.at_start);
   read_end(end, spec.at_end);
@@ -145,7 +140,7 @@ CamDesign read_cam(const XmlElementReader& r, const std::string& file,
                        (spec.start > at ? "a gap" : "an overlap") + ")");
     at = spec.end;
     level += spec.kind == SegmentKind::Rise ? spec.lift : spec.kind == SegmentKind::Return ? -spec.lift : 0;
-    collect(s, unknown);
+    s.collect_unknown_names(unknown);
     d.segments.push_back(std::move(spec));
   }
   if (std::abs(at - 2 * std::numbers::pi) > 1e-9)
@@ -159,8 +154,9 @@ CamDesign read_cam(const XmlElementReader& r, const std::string& file,
   return d;
 }
 
-void read_conversion(const XmlElementReader& r, CamProject& p) {
-  p.conversion.tolerance = r.positive("tolerance", p.conversion.tolerance);
+// `unit`: millimetres per length unit of the file; the floor applies to the tolerance in mm.
+void read_conversion(const XmlElementReader& r, double unit, CamProject& p) {
+  if (r.has("tolerance")) p.conversion.tolerance = r.positive("tolerance") * unit;
   if (p.conversion.tolerance < kMinTolerance)
     r.fail("tolerance", "a tolerance >= " + number(kMinTolerance) + " mm");
   p.conversion.base = r.choice("base", {"quasi-uniform", "rqb"}, "quasi-uniform") == "rqb"
@@ -212,14 +208,13 @@ CamProject parse_cam_project(const std::string& text, const std::string& file,
       cam_reader.fail("pressure-angle-limit", "an angle in (0, 90) degrees");
     p.pressure_angle_limit = *limit * kRadiansPerDegree;
   }
-  collect(cam_reader, unknown);
+  cam_reader.collect_unknown_names(unknown);
   if (const XMLElement* conversion = root.child("conversion")) {
     const XmlElementReader r(conversion, file);
-    read_conversion(r, p);
-    if (r.has("tolerance")) p.conversion.tolerance *= unit;
-    collect(r, unknown);
+    read_conversion(r, unit, p);
+    r.collect_unknown_names(unknown);
   }
-  collect(root, unknown);
+  root.collect_unknown_names(unknown);
   settle_unknown_names(unknown, policy, warnings);
   return p;
 }

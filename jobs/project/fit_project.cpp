@@ -75,8 +75,7 @@ void read_fit(const XMLElement* e, const std::string& file, std::vector<UnknownN
   if (r.has("lambda")) p.fairness_weight = r.positive("lambda");
   p.base = r.choice("base", {"rqb", "quartic"}, "rqb") == "quartic" ? ArcKind::quartic
                                                                      : ArcKind::rqb;
-  const std::vector<UnknownName> u = r.unknown_names();
-  unknown.insert(unknown.end(), u.begin(), u.end());
+  r.collect_unknown_names(unknown);
 }
 
 FitProject read_document(const XmlDocument& doc, std::vector<std::string>& warnings,
@@ -94,8 +93,7 @@ FitProject read_document(const XmlDocument& doc, std::vector<std::string>& warni
     const XMLElement* fit = r.child("fit");
     if (!fit) throw InputError(r.where() + ": expected a <fit> element");
     read_fit(fit, doc.file(), unknown, p);
-    const std::vector<UnknownName> u = r.unknown_names();
-    unknown.insert(unknown.end(), u.begin(), u.end());
+    r.collect_unknown_names(unknown);
   }
   settle_unknown_names(unknown, policy, warnings);
   return p;

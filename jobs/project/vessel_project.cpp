@@ -32,8 +32,7 @@ class Reader {
   void visit(const XMLElement* e, F&& read) {
     const XmlElementReader r(e, file_);
     read(r);
-    const std::vector<UnknownName> u = r.unknown_names();
-    unknown_.insert(unknown_.end(), u.begin(), u.end());
+    r.collect_unknown_names(unknown_);
   }
   const std::vector<UnknownName>& unknown() const { return unknown_; }
 
@@ -110,7 +109,10 @@ void to_millimetres(VesselProject& p, double unit) {
     if (*end)
       for (std::optional<double>* v : {&(*end)->r, &(*end)->dr, &(*end)->ddr})
         if (*v) **v *= unit;
-  if (d.preset) d.preset->crown *= unit, d.preset->knuckle *= unit;
+  if (d.preset) {
+    d.preset->crown *= unit;
+    d.preset->knuckle *= unit;
+  }
 }
 
 // The <vessel> element; `root` is the <polarform> root (null when <vessel> is the root), whose

@@ -197,8 +197,7 @@ const tinyxml2::XMLElement* XmlElementReader::child(const char* name) const {
   return c;
 }
 
-std::vector<UnknownName> XmlElementReader::unknown_names() const {
-  std::vector<UnknownName> out;
+void XmlElementReader::collect_unknown_names(std::vector<UnknownName>& out) const {
   for (auto* a = e_->FirstAttribute(); a; a = a->Next())
     if (!read_attributes_.count(a->Name()))
       out.push_back({file_ + ":" + std::to_string(a->GetLineNum()) + ": unknown attribute '" +
@@ -209,7 +208,6 @@ std::vector<UnknownName> XmlElementReader::unknown_names() const {
       out.push_back({file_ + ":" + std::to_string(c->GetLineNum()) + ": unknown element <" +
                          c->Name() + "> in <" + e_->Name() + ">",
                      joined(asked_children_)});
-  return out;
 }
 
 void check_project_version(const XmlElementReader& root, UnknownNames policy,

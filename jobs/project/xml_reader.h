@@ -69,8 +69,8 @@ class XmlElementReader {
   std::vector<const tinyxml2::XMLElement*> children(const char* name) const;
   const tinyxml2::XMLElement* child(const char* name) const;  // the first, or null
 
-  // Every attribute and child element left unread, with the names this reader asked for.
-  std::vector<UnknownName> unknown_names() const;
+  // Appends every attribute and child element left unread, with the names this reader asked for.
+  void collect_unknown_names(std::vector<UnknownName>& unknown) const;
 
   [[noreturn]] void fail(const char* attribute, const std::string& expected) const;
 

@@ -1,7 +1,7 @@
 // Numbers as a report states them: rounded to 12 significant digits at the edge (report.json,
 // the studio's report lines), so that 240° computed through radians reads 240 and not
-// 239.99999999999997. Twelve digits keep every measured figure: an error of 1e-9 mm beside a
-// 1000 mm part needs 13 orders but only 1 digit of its own.
+// 239.99999999999997. The rounding is relative: a value changes by at most 5e-13 of itself, far
+// below any measured error (an error of 1e-9 mm keeps 12 digits of its own).
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -7,7 +7,6 @@
 
 #include "jobs/cam/cam_key_figures.h"
 #include "jobs/cam/cam_outputs.h"
-#include "src/number_text.h"
 #include "src/units.h"
 #include "ui/cli/commands.h"
 #include "ui/cli/validators.h"
@@ -30,8 +29,7 @@ struct CamArgs {
 
 void run(const CamArgs& a) {
   std::vector<std::string> warnings;
-  CamProject project =
-      read_cam_project(a.design, warnings, a.lenient ? UnknownNames::warn : UnknownNames::refuse);
+  CamProject project = read_cam_project(a.design, warnings, unknown_names_policy(a.lenient));
   for (const std::string& w : warnings) std::cerr << "polarform: warning: " << w << "\n";
   if (a.tolerance) project.conversion.tolerance = *a.tolerance;
   if (!a.base.empty()) project.conversion.base = a.base == "rqb" ? ArcKind::rqb : ArcKind::quartic;

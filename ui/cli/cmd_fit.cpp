@@ -87,8 +87,7 @@ void run(const FitArgs& a) {
   FitJobOptions defaults;
   if (std::filesystem::path(a.scan).extension() == ".xml") {
     std::vector<std::string> warnings;
-    const FitProject project =
-        read_fit_project(a.scan, warnings, a.lenient ? UnknownNames::warn : UnknownNames::refuse);
+    const FitProject project = read_fit_project(a.scan, warnings, unknown_names_policy(a.lenient));
     for (const std::string& w : warnings) std::cerr << "polarform: warning: " << w << "\n";
     scan = scan_path(project, a.scan);
     defaults = fit_job_options(project);

@@ -38,7 +38,7 @@ ScanCamJobOptions job_options(const ScanCamArgs& a) {
       throw InputError("--axis '" + a.axis + "': expected a non-zero vector");
   }
   if (!a.nominal.empty()) o.nominal = a.nominal;
-  o.nominal_names = a.lenient ? UnknownNames::warn : UnknownNames::refuse;
+  o.nominal_names = unknown_names_policy(a.lenient);
   if (!a.tol.empty()) o.tolerance = parse_numbers("--tol", a.tol, 1, 1)[0];
   const bool follower_given = !a.follower.empty() || !a.roller_radius.empty() || !a.offset.empty();
   if (follower_given) {

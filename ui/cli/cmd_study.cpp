@@ -46,8 +46,7 @@ void run(const StudyArgs& a) {
   const auto [loosest, tightest] = parse_range(a.range);
   const std::vector<double> tolerances = log_tolerances(loosest, tightest, a.per_decade);
   std::vector<std::string> warnings;
-  const CamProject project =
-      read_cam_project(a.design, warnings, a.lenient ? UnknownNames::warn : UnknownNames::refuse);
+  const CamProject project = read_cam_project(a.design, warnings, unknown_names_policy(a.lenient));
   for (const std::string& w : warnings) std::cerr << "polarform: warning: " << w << "\n";
   ProgressBar bar("study", !a.quiet);
   const StudyJobResult r =

@@ -35,8 +35,7 @@ VesselJobResult run_job(const VesselProject& project, const std::string& file) {
 
 void run(const VesselArgs& a) {
   std::vector<std::string> warnings;
-  VesselProject project = read_vessel_project(
-      a.design, warnings, a.lenient ? UnknownNames::warn : UnknownNames::refuse);
+  VesselProject project = read_vessel_project(a.design, warnings, unknown_names_policy(a.lenient));
   for (const std::string& w : warnings) std::cerr << "polarform: warning: " << w << "\n";
   if (a.tolerance) project.tolerance = *a.tolerance;
 

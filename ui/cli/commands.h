@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "jobs/project/unknown_names.h"
 #include "src/error.h"
 
 namespace polarform::cli {
@@ -35,6 +36,11 @@ auto for_design(const std::string& design, Job&& job) {
 inline constexpr const char* kLenientHelp =
     "read a project with unknown attributes or elements, or of a newer version, ignoring what "
     "this polarform does not know (a warning for each); without it they are an error";
+
+// What a command does with a project's unknown names: refuse them, or warn with --lenient.
+inline UnknownNames unknown_names_policy(bool lenient) {
+  return lenient ? UnknownNames::warn : UnknownNames::refuse;
+}
 
 // One per cmd_*.cpp.
 void add_cam_command(CLI::App& app);

@@ -112,6 +112,10 @@ TEST(CamProject, InchProjectsAreReadInMillimetres) {
   EXPECT_TRUE(root.cam == inch.cam);
   EXPECT_DOUBLE_EQ(root.conversion.tolerance, 0.00254);
   EXPECT_TRUE(parse_cam_project(cam_project_xml(root), "saved.xml", warnings) == root);
+  // The tolerance floor (1e-9 mm) applies in mm: 5e-10 inch is 1.27e-9 mm, above it.
+  std::string fine = root_inch;
+  fine.replace(fine.find("0.0001"), 6, "5e-10");
+  EXPECT_DOUBLE_EQ(parse_cam_project(fine, "cam.xml", warnings).conversion.tolerance, 5e-10 * 25.4);
   EXPECT_TRUE(warnings.empty());
   EXPECT_NE(error_of(cam("units=\"furlong\" " + kPlate, kSegments)).find("attribute 'units'"),
             std::string::npos);

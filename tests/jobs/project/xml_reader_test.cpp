@@ -28,7 +28,9 @@ TEST(XmlReader, TypedAttributes) {
   EXPECT_FALSE(cam.optional_number("absent"));
   EXPECT_EQ(cam.choice("k", {"knife-edge", "roller"}), "roller");
   EXPECT_EQ(cam.numbers("v", 2), (std::vector<double>{3, 4}));
-  EXPECT_TRUE(cam.unknown_names().empty());
+  std::vector<UnknownName> unknown;
+  cam.collect_unknown_names(unknown);
+  EXPECT_TRUE(unknown.empty());
 }
 
 TEST(XmlReader, ErrorsNameFileLineElementAttribute) {
@@ -57,7 +59,8 @@ TEST(XmlReader, UnreadAttributesAndElementsAreUnknownNamesWithTheKnownOnes) {
   cam.has("b");
   cam.children("segment");
   cam.child("conversion");
-  const std::vector<UnknownName> unknown = cam.unknown_names();
+  std::vector<UnknownName> unknown;
+  cam.collect_unknown_names(unknown);
   ASSERT_EQ(unknown.size(), 2u);
   EXPECT_EQ(unknown[0].what, "t.xml:2: unknown attribute 'colour' on <cam>");
   EXPECT_EQ(unknown[0].known, "a, b");
