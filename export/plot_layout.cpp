@@ -127,7 +127,7 @@ double widest_label(const TickSet& ticks) {
 
 }  // namespace
 
-std::vector<PanelFrame> lay_out_figure(const Figure& figure) {
+std::vector<PanelFrame> lay_out_figure(const Figure& figure, double right_room) {
   const std::deque<Plot>& panels = figure.panels();
   if (panels.empty()) throw InputError("Figure: no panels; call add_panel() first");
   const std::size_t n = panels.size();
@@ -191,7 +191,7 @@ std::vector<PanelFrame> lay_out_figure(const Figure& figure) {
   const bool any_y_label =
       std::any_of(panels.begin(), panels.end(), [](const Plot& p) { return !p.y_label.empty(); });
   const double label_column = any_y_label ? style::label_font + 10 : 0;
-  const double right = figure.width() - kRightMargin;
+  const double right = figure.width() - kRightMargin - right_room;
   std::vector<AxisRange> final_x(n), final_y(n);
   std::vector<TickSet> y_ticks(n);
   const auto left_margin_needed = [&](double left) {
@@ -227,7 +227,7 @@ std::vector<PanelFrame> lay_out_figure(const Figure& figure) {
                                    panel_name(x_owner, shared ? 0 : i) + " x_tick_step");
     const bool labelled = !shared || i + 1 == n;
     frames.push_back({area, x, y, std::move(x_ticks), std::move(y_ticks[i]), labelled,
-                      labelled ? x_owner.x_label : std::string()});
+                      labelled ? x_owner.x_label : std::string(), false});
   }
   return frames;
 }

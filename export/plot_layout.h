@@ -19,12 +19,14 @@ struct PanelFrame {
   TickSet x_ticks, y_ticks;
   bool x_tick_labels;   // false in the upper panels of a shared-x stack
   std::string x_label;  // drawn under the panel; empty in those upper panels
+  bool legend_outside = false;  // the legend goes right of the area, in the reserved room
 };
 
 // Distance of the figure title's baseline and of the y labels' centre line from the edges.
 inline constexpr double kFigurePadding = 10;
 
-// One frame per panel, top to bottom. Throws InputError for settings that cannot be drawn.
-std::vector<PanelFrame> lay_out_figure(const Figure& figure);
+// One frame per panel, top to bottom, leaving `right_room` pixels right of the plot areas (for
+// legends beside them). Throws InputError for settings that cannot be drawn.
+std::vector<PanelFrame> lay_out_figure(const Figure& figure, double right_room = 0);
 
 }  // namespace polarform

@@ -17,17 +17,33 @@ constexpr double kRow = 17;
 constexpr double kSwatch = 26;
 constexpr double kGap = 6;  // between swatch and text
 
-// How much of the drawn data a box at rect would hide.
-int covered(const PixelRect& rect, std::span<const Polyline> drawn) {
+bool overlaps(const PixelRect& a, const PixelRect& b) {
+  return a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom;
+}
+
+// How much of the obstacles a box at rect would hide.
+int covered(const PixelRect& rect, const LegendObstacles& obstacles) {
   int count = 0;
-  for (const Polyline& line : drawn) {
+  for (const Polyline& line : obstacles.lines) {
     if (line.size() == 1) count += rect.contains(line[0]);
     for (std::size_t i = 1; i < line.size(); ++i) {
       PixelPoint a = line[i - 1], b = line[i];
       count += clip_segment(a, b, rect);
     }
   }
+  for (const PixelRect& box : obstacles.boxes) count += overlaps(rect, box);
   return count;
+}
+
+PixelRect box_at(const Legend& legend, PixelPoint p) {
+  return {p.x, p.y, p.x + legend.width, p.y + legend.height};
+}
+
+// Top right first: ties keep the conventional place.
+std::vector<PixelPoint> corners(const Legend& legend, const PixelRect& area) {
+  const double left = area.left + kInset, right = area.right - kInset - legend.width;
+  const double top = area.top + kInset, bottom = area.bottom - kInset - legend.height;
+  return {{right, top}, {left, top}, {right, bottom}, {left, bottom}};
 }
 
 void draw_swatch(SvgWriter& svg, const LegendEntry& e, double x, double y) {
@@ -62,37 +78,62 @@ void draw_swatch(SvgWriter& svg, const LegendEntry& e, double x, double y) {
 
 }  // namespace
 
-void draw_legend(SvgWriter& svg, std::span<const LegendEntry> entries, const PixelRect& area,
-                 std::span<const Polyline> drawn) {
-  std::vector<LegendEntry> rows;
+Legend make_legend(std::span<const LegendEntry> entries) {
+  Legend legend;
   for (const LegendEntry& e : entries)
-    if (std::find(rows.begin(), rows.end(), e) == rows.end()) rows.push_back(e);
-  if (rows.empty()) return;
-
+    if (std::find(legend.rows.begin(), legend.rows.end(), e) == legend.rows.end())
+      legend.rows.push_back(e);
+  if (legend.empty()) return legend;
   double text = 0;
-  for (const LegendEntry& e : rows) text = std::max(text, text_width(e.label, style::legend_font));
-  const double width = 2 * kPadding + kSwatch + kGap + text;
-  const double height = 2 * kPadding + kRow * static_cast<double>(rows.size()) - 4;
-  const double left = area.left + kInset, right = area.right - kInset - width;
-  const double top = area.top + kInset, bottom = area.bottom - kInset - height;
-  // Top right first: ties keep the conventional place.
-  const PixelPoint corners[] = {{right, top}, {left, top}, {right, bottom}, {left, bottom}};
-  PixelPoint best = corners[0];
+  for (const LegendEntry& e : legend.rows)
+    text = std::max(text, text_width(e.label, style::legend_font));
+  legend.width = 2 * kPadding + kSwatch + kGap + text;
+  legend.height = 2 * kPadding + kRow * static_cast<double>(legend.rows.size()) - 4;
+  return legend;
+}
+
+std::optional<PixelPoint> free_legend_place(const Legend& legend, const PixelRect& area,
+                                            const LegendObstacles& obstacles) {
+  std::vector<PixelPoint> places = corners(legend, area);
+  const double middle = 0.5 * (area.left + area.right - legend.width);
+  places.push_back({middle, places[0].y});
+  places.push_back({middle, places[2].y});
+  for (const PixelPoint& p : places) {
+    const PixelRect box = box_at(legend, p);
+    if (box.left >= area.left && box.right <= area.right && box.top >= area.top &&
+        box.bottom <= area.bottom && covered(box, obstacles) == 0)
+      return p;
+  }
+  return std::nullopt;
+}
+
+PixelPoint least_covering_legend_place(const Legend& legend, const PixelRect& area,
+                                       const LegendObstacles& obstacles) {
+  PixelPoint best{};
   int least = -1;
-  for (const PixelPoint& c : corners) {
-    const int count = covered({c.x, c.y, c.x + width, c.y + height}, drawn);
+  for (const PixelPoint& c : corners(legend, area)) {
+    const int count = covered(box_at(legend, c), obstacles);
     if (least < 0 || count < least) {
       least = count;
       best = c;
     }
   }
+  return best;
+}
 
+PixelPoint outside_legend_place(const PixelRect& area) { return {area.right + kInset, area.top}; }
+
+double outside_legend_room(double legend_width) { return kInset + legend_width; }
+
+void draw_legend(SvgWriter& svg, const Legend& legend, PixelPoint best) {
+  if (legend.empty()) return;
+  const std::vector<LegendEntry>& rows = legend.rows;
   svg.begin("g").attr("class", "legend").attr("font-size", style::legend_font).open();
   svg.begin("rect")
       .attr("x", best.x)
       .attr("y", best.y)
-      .attr("width", width)
-      .attr("height", height)
+      .attr("width", legend.width)
+      .attr("height", legend.height)
       .attr("rx", 3)
       .attr("fill", "white")
       .attr("fill-opacity", 0.9)

@@ -76,6 +76,47 @@ std::string legend_label(const DrawnSeries& d) {
          (d.omitted == 1 ? "" : "s") + " \u2264 0 omitted)";
 }
 
+// The box of a line of text whose baseline starts at (x, y) (anchor start) or ends there.
+PixelRect text_box(double x, double y, const std::string& text, double font, bool anchor_end) {
+  const double w = text_width(text, font);
+  const double left = anchor_end ? x - w : x;
+  return {left, y - font, left + w, y + 0.25 * font};
+}
+
+// A vertical reference line's label: rotated to run up along the line, ending near the top, on
+// the line's left; its anchor point and its box.
+struct VerticalLabel {
+  double x, y;
+  PixelRect box;
+};
+VerticalLabel vertical_label(double line_x, const PixelRect& a, const std::string& text) {
+  const double x = line_x - 4, y = a.top + 4, font = style::note_font;
+  return {x, y, {x - font, y, x + 0.25 * font, y + text_width(text, font)}};
+}
+
+// A horizontal reference line's label: above the line, ending near the right edge.
+PixelRect horizontal_label_box(double line_y, const PixelRect& a, const std::string& text) {
+  return text_box(a.right - 4, line_y - 4, text, style::note_font, true);
+}
+
+// An annotation's text: right of and above its point where it fits, else left of or below it.
+struct AnnotationText {
+  double x, y;
+  bool anchor_end;
+  PixelRect box;
+};
+AnnotationText annotation_text(PixelPoint p, const std::string& text, const PixelRect& a) {
+  const bool fits_right = p.x + 6 + text_width(text, style::note_font) <= a.right;
+  const bool fits_above = p.y - 6 - style::note_font >= a.top;
+  const double x = fits_right ? p.x + 6 : p.x - 6;
+  const double y = fits_above ? p.y - 6 : p.y + 6 + style::note_font;
+  return {x, y, !fits_right, text_box(x, y, text, style::note_font, !fits_right)};
+}
+
+PixelRect square_around(PixelPoint p, double half) {
+  return {p.x - half, p.y - half, p.x + half, p.y + half};
+}
+
 // A white outline painted under the glyphs, for notes drawn over data.
 SvgWriter& with_halo(SvgWriter& svg) {
   return svg.attr("stroke", "white")
@@ -117,14 +158,13 @@ void draw_reference_lines(SvgWriter& svg, const Plot& plot, const PanelFrame& f)
         .attr("stroke-dasharray", style::reference_dash)
         .empty();
     if (line.label.empty()) continue;
-    // Rotated to run up along the line, ending near the top, on the line's left.
-    const double tx = x - 4, ty = a.top + 4;
+    const VerticalLabel label = vertical_label(x, a, line.label);
     svg.begin("text")
         .attr("class", "reference-label")
-        .attr("x", tx)
-        .attr("y", ty)
+        .attr("x", label.x)
+        .attr("y", label.y)
         .attr("text-anchor", "end")
-        .attr("transform", "rotate(-90 " + svg_number(tx) + " " + svg_number(ty) + ")")
+        .attr("transform", "rotate(-90 " + svg_number(label.x) + " " + svg_number(label.y) + ")")
         .attr("font-size", style::note_font)
         .attr("fill", color);
     with_halo(svg).text(line.label);
@@ -196,13 +236,12 @@ void draw_annotations(SvgWriter& svg, const Plot& plot, const PanelFrame& f) {
         .attr("r", 2.5)
         .attr("fill", style::text_color)
         .empty();
-    const bool fits_right = p.x + 6 + text_width(note.text, style::note_font) <= a.right;
-    const bool fits_above = p.y - 6 - style::note_font >= a.top;
+    const AnnotationText t = annotation_text(p, note.text, a);
     svg.begin("text")
         .attr("class", "annotation")
-        .attr("x", fits_right ? p.x + 6 : p.x - 6)
-        .attr("y", fits_above ? p.y - 6 : p.y + 6 + style::note_font)
-        .attr("text-anchor", fits_right ? "start" : "end")
+        .attr("x", t.x)
+        .attr("y", t.y)
+        .attr("text-anchor", t.anchor_end ? "end" : "start")
         .attr("font-size", style::note_font)
         .attr("fill", style::text_color);
     with_halo(svg).text(note.text);
@@ -228,6 +267,11 @@ void draw_highlights(SvgWriter& svg, const Plot& plot, const PanelFrame& f) {
   }
 }
 
+bool no_data(const std::vector<DrawnSeries>& drawn) {
+  return std::all_of(drawn.begin(), drawn.end(),
+                     [](const DrawnSeries& d) { return d.runs.empty(); });
+}
+
 LegendEntry::Kind legend_kind(Series::Style s) {
   switch (s) {
     case Series::Style::line:
@@ -242,22 +286,56 @@ LegendEntry::Kind legend_kind(Series::Style s) {
   return LegendEntry::Kind::line;
 }
 
-void draw_legend_for(SvgWriter& svg, const Plot& plot, const std::vector<DrawnSeries>& drawn,
-                     const PanelFrame& f) {
+Legend panel_legend(const Plot& plot, const std::vector<DrawnSeries>& drawn) {
   std::vector<LegendEntry> entries;
-  std::vector<Polyline> obstacles;
-  for (const DrawnSeries& d : drawn) {
+  for (const DrawnSeries& d : drawn)
     if (!d.series->label.empty())
       entries.push_back({legend_kind(d.series->style), legend_label(d), d.color, d.shape});
-    if (draws_line(d.series->style))
-      obstacles.insert(obstacles.end(), d.runs.begin(), d.runs.end());
-    for (const PixelPoint& p : d.markers) obstacles.push_back({p});
-  }
   for (const Band& band : plot.bands())
     if (!band.label.empty())
       entries.push_back(
           {LegendEntry::Kind::band, band.label, or_default(band.color, style::band_color)});
-  draw_legend(svg, entries, f.area, obstacles);
+  return make_legend(entries);
+}
+
+// Everything drawn in the plot area that a legend must leave visible: the data, annotations with
+// their text, highlight rings, reference-line labels, the "no data" note.
+LegendObstacles legend_obstacles(const Plot& plot, const std::vector<DrawnSeries>& drawn,
+                                 const PanelFrame& f) {
+  LegendObstacles out;
+  for (const DrawnSeries& d : drawn) {
+    if (draws_line(d.series->style))
+      out.lines.insert(out.lines.end(), d.runs.begin(), d.runs.end());
+    for (const PixelPoint& p : d.markers)
+      out.boxes.push_back(square_around(p, style::marker_radius));
+  }
+  const PixelRect& a = f.area;
+  for (const Annotation& note : plot.annotations()) {
+    const PixelPoint p{f.x(note.x), f.y(note.y)};
+    if (!a.contains(p)) continue;
+    out.boxes.push_back(square_around(p, 2.5));
+    out.boxes.push_back(annotation_text(p, note.text, a).box);
+  }
+  for (const Highlight& h : plot.highlights()) {
+    const PixelPoint p{f.x(h.x), f.y(h.y)};
+    if (a.contains(p)) out.boxes.push_back(square_around(p, style::highlight_radius + 1));
+  }
+  for (const ReferenceLine& line : plot.vertical_lines()) {
+    const double x = f.x(line.value);
+    if (!line.label.empty() && x >= a.left && x <= a.right)
+      out.boxes.push_back(vertical_label(x, a, line.label).box);
+  }
+  for (const ReferenceLine& line : plot.horizontal_lines()) {
+    const double y = f.y(line.value);
+    if (!line.label.empty() && y >= a.top && y <= a.bottom)
+      out.boxes.push_back(horizontal_label_box(y, a, line.label));
+  }
+  if (no_data(drawn)) {
+    const double cx = 0.5 * (a.left + a.right), cy = 0.5 * (a.top + a.bottom);
+    const double w = text_width("no data", style::label_font);
+    out.boxes.push_back({cx - w / 2, cy - style::label_font, cx + w / 2, cy + style::label_font});
+  }
+  return out;
 }
 
 }  // namespace
@@ -272,9 +350,7 @@ void draw_panel(SvgWriter& svg, const Plot& plot, const PanelFrame& frame) {
   draw_frame(svg, plot, frame);
   draw_highlights(svg, plot, frame);
   draw_annotations(svg, plot, frame);
-  const bool no_data =
-      std::all_of(drawn.begin(), drawn.end(), [](const DrawnSeries& d) { return d.runs.empty(); });
-  if (no_data)
+  if (no_data(drawn))
     svg.begin("text")
         .attr("class", "no-data")
         .attr("x", 0.5 * (frame.area.left + frame.area.right))
@@ -284,8 +360,26 @@ void draw_panel(SvgWriter& svg, const Plot& plot, const PanelFrame& frame) {
         .attr("font-size", style::label_font)
         .attr("fill", style::muted_text_color)
         .text("no data");
-  draw_legend_for(svg, plot, drawn, frame);
+  const Legend legend = panel_legend(plot, drawn);
+  if (!legend.empty()) {
+    const LegendObstacles obstacles = legend_obstacles(plot, drawn, frame);
+    std::optional<PixelPoint> place;
+    if (frame.legend_outside)
+      place = outside_legend_place(frame.area);
+    else
+      place = free_legend_place(legend, frame.area, obstacles);
+    draw_legend(svg, legend,
+                place.value_or(least_covering_legend_place(legend, frame.area, obstacles)));
+  }
   svg.close();
+}
+
+PanelLegendFit panel_legend_fit(const Plot& plot, const PanelFrame& frame) {
+  const std::vector<DrawnSeries> drawn = map_series(plot, frame);
+  const Legend legend = panel_legend(plot, drawn);
+  if (legend.empty()) return {};
+  return {legend.width,
+          free_legend_place(legend, frame.area, legend_obstacles(plot, drawn, frame)).has_value()};
 }
 
 }  // namespace polarform

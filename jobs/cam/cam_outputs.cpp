@@ -31,8 +31,13 @@ namespace {
 using json = nlohmann::ordered_json;
 
 std::string svaj_csv(const CamJobResult& r) {
-  std::vector<std::string> headers = {"theta [deg]", "s [mm]", "v [mm/s]", "a [mm/s^2]",
-                                      "j [mm/s^3]", "ds/dtheta [mm/rad]", "d2s/dtheta2 [mm/rad^2]",
+  std::vector<std::string> headers = {"cam angle theta [deg]",
+                                      "s [mm]",
+                                      "v [mm/s]",
+                                      "a [mm/s^2]",
+                                      "j [mm/s^3]",
+                                      "ds/dtheta [mm/rad]",
+                                      "d2s/dtheta2 [mm/rad^2]",
                                       "d3s/dtheta3 [mm/rad^3]"};
   const auto* plate = std::get_if<PlateCamAnalysis>(&r.analysis.cam);
   const auto* cylindrical = std::get_if<CylindricalCamAnalysis>(&r.analysis.cam);
@@ -105,7 +110,7 @@ std::string html_report(const CamJobResult& r, const CamOutputOptions& o, const 
     arcs.push_back({format_trimmed(degrees_in_turn(a.start), 4),
                     format_trimmed(a.sweep * kDegreesPerRadian, 4),
                     format_trimmed(a.max_radial_error * 1e3, 4)});
-  html.add_table({"arc start [deg]", "sweep [deg]", "max radial error [µm]"}, arcs);
+  html.add_table({"arc start ψ [deg]", "sweep [deg]", "max radial error [µm]"}, arcs);
   html.add_paragraph("Error budget: law → B-spline " +
                      (c.function_exact ? std::string("exact") : format_trimmed(c.function_error * 1e3, 4) + " µm") +
                      ", base-circle synchronization " + format_trimmed(c.synchronization_error * 1e3, 4) + " µm.");

@@ -126,6 +126,18 @@ void add_profile_extras(json& j, const CamConversionStage& c) {
 json cam_report_fields(const CamDesignStage& design, const CamAnalysisStage& analysis,
                        const CamConversionStage* conversion) {
   json j;
+  // Which angle the *_deg fields are (docs/cli.md, "Angles and the follower's position").
+  j["angles"] = {
+      {"theta",
+       "cam angle θ: the cam's rotation from its position at θ = 0, where the follower is on "
+       "+y; segments, continuity, motion and pressure-angle extremes, radii of curvature, "
+       "undercut"},
+      {"psi",
+       design.project.cam.type == CamType::Plate
+           ? "polar angle ψ of a contour point in the cam frame, from +x towards +y; arc_list, "
+             "worst_angle_deg"
+           : "polar angle ψ around the cylinder axis in the cam frame, from +x towards +y; "
+             "arc_list, worst_angle_deg"}};
   add_design_fields(j, design);
   if (conversion) add_profile_fields(j, design, *conversion);
   add_analysis_fields(j, design, analysis);

@@ -88,7 +88,7 @@ Figure polar_preview(const FitJobResult& r) {
   shape.add(std::move(curve));
   Plot& dev = fig.add_panel();
   dev.title = "Signed deviation (closest-point distance, + outside) against polar angle";
-  dev.x_label = "polar angle about the centre [deg]";
+  dev.x_label = "polar angle θ about the centre [deg]";
   std::vector<double> angle(static_cast<std::size_t>(local.cols()));
   for (Eigen::Index k = 0; k < local.cols(); ++k)
     angle[static_cast<std::size_t>(k)] =

@@ -40,8 +40,8 @@ std::vector<double> cam_angles() {
 }
 
 std::string svaj_csv(const ScanCamJobResult& r) {
-  std::vector<std::string> headers = {"theta [deg]", "s [mm]", "v [mm/rad]", "a [mm/rad^2]",
-                                      "j [mm/rad^3]"};
+  std::vector<std::string> headers = {"cam angle theta [deg]", "s [mm]", "v [mm/rad]",
+                                      "a [mm/rad^2]", "j [mm/rad^3]"};
   if (r.nominal)
     for (const char* h :
          {"nominal s [mm]", "nominal v [mm/rad]", "nominal a [mm/rad^2]", "nominal j [mm/rad^3]"})
@@ -62,7 +62,7 @@ std::string svaj_csv(const ScanCamJobResult& r) {
 }
 
 std::string deviation_csv(const NominalComparison& c) {
-  CsvWriter csv({"theta [deg]", "radial deviation [mm]", "normal deviation [mm]"});
+  CsvWriter csv({"cam angle theta [deg]", "radial deviation [mm]", "normal deviation [mm]"});
   for (std::size_t i = 0; i < c.theta.size(); ++i)
     csv.row({c.theta[i] * kDegreesPerRadian, c.radial[i], c.normal[i]});
   return csv.str();

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <numbers>
 #include <set>
 
@@ -51,6 +52,23 @@ double solve(const std::function<double(double)>& g, double t0, double t1, doubl
   return 0.5 * (t0 + t1);
 }
 
+// Appends (θ, y), θ in [0°, 360°), to a curve along the azimuth; where the curve wraps through the
+// 360° seam it ends at one edge of the panel and goes on from the other (a NaN breaks the line),
+// instead of a line back across the panel.
+void add_azimuth_point(Series& s, double theta_deg, double y) {
+  if (!s.x.empty() && std::abs(theta_deg - s.x.back()) > 180) {
+    const double x0 = s.x.back(), y0 = s.y.back();
+    const bool forward = theta_deg < x0;  // 359° -> 1°: through 360° onwards
+    const double unwrapped = forward ? theta_deg + 360 : theta_deg - 360;
+    const double edge = forward ? 360 : 0;
+    const double y_edge = y0 + (y - y0) * (edge - x0) / (unwrapped - x0);
+    s.x.insert(s.x.end(), {edge, std::numeric_limits<double>::quiet_NaN(), 360 - edge});
+    s.y.insert(s.y.end(), {y_edge, std::numeric_limits<double>::quiet_NaN(), y_edge});
+  }
+  s.x.push_back(theta_deg);
+  s.y.push_back(y);
+}
+
 double value(const VizJobResult& r, double u, double v) {
   double p = 0.0;
   r.field.F.point(u, v, &p);
@@ -85,10 +103,10 @@ Figure viz_preview_figure(const VizJobResult& r) {
                {},
                Series::Style::line,
                c};
-    for (double v : tessellation_parameters(S.knots_v(), S.front_v(), S.back_v(), 400)) {
-      fit.x.push_back(coordinates(r, u, v).theta * kDegreesPerRadian);
-      fit.y.push_back(value(r, u, v));
-    }
+    // The azimuth of S(u, v) depends on v alone (S = F·B); taken at the middle row, it is
+    // defined at the poles too.
+    for (double v : tessellation_parameters(S.knots_v(), S.front_v(), S.back_v(), 400))
+      add_azimuth_point(fit, coordinates(r, u_mid, v).theta * kDegreesPerRadian, value(r, u, v));
     Series data{"", {}, {}, Series::Style::markers, c};
     for (Eigen::Index k = 0; k < a.size(); ++k)
       if (a[k] == level) {

@@ -378,6 +378,43 @@ TEST(SvgPlot, LegendAvoidsTheData) {
   EXPECT_NEAR(box->DoubleAttribute("y"), a.top + 8, kPx);
 }
 
+// Annotations in the free corners keep the legend away from them, as the data do.
+TEST(SvgPlot, LegendAvoidsAnnotations) {
+  Figure figure;
+  Plot& plot = figure.add_panel();
+  plot.add({"rising", {0, 10}, {0, 10}});
+  plot.add_annotation(0.2, 9.8, "a note in the top left");
+  plot.add_annotation(9.8, 0.2, "one in the bottom right");
+  const ParsedSvg svg(svg_document(figure));
+  const PixelRect a = test::area_of(svg.all("plot-area")[0]);
+  const XMLElement* box = svg.all("legend")[0]->FirstChildElement("rect");
+  // Top left and bottom right hold the notes, top right and bottom left the line: the middle of
+  // the top edge is left.
+  const double width = box->DoubleAttribute("width");
+  EXPECT_NEAR(box->DoubleAttribute("x"), 0.5 * (a.left + a.right - width), kPx);
+  EXPECT_NEAR(box->DoubleAttribute("y"), a.top + 8, kPx);
+}
+
+// When every place inside the plot hides something, the plot narrows and the legend stands
+// beside it, level with its top.
+TEST(SvgPlot, LegendGoesBesideAPlotWithNoFreePlace) {
+  Figure figure;
+  Plot& plot = figure.add_panel();
+  Series cloud{"scattered points", {}, {}, Series::Style::markers};
+  for (int i = 0; i <= 40; ++i)
+    for (int k = 0; k <= 20; ++k) {
+      cloud.x.push_back(i);
+      cloud.y.push_back(k);
+    }
+  plot.add(std::move(cloud));
+  const ParsedSvg svg(svg_document(figure));
+  const PixelRect a = test::area_of(svg.all("plot-area")[0]);
+  const XMLElement* box = svg.all("legend")[0]->FirstChildElement("rect");
+  EXPECT_NEAR(box->DoubleAttribute("x"), a.right + 8, kPx);
+  EXPECT_NEAR(box->DoubleAttribute("y"), a.top, kPx);
+  EXPECT_LE(box->DoubleAttribute("x") + box->DoubleAttribute("width"), figure.width());
+}
+
 TEST(SvgPlot, TextIsEscapedAndOutputIsDeterministic) {
   const auto build = [] {
     Figure figure(640, 360);

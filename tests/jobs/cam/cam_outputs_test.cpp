@@ -157,7 +157,7 @@ TEST(CamOutputs, SvajCsvCoversTheRevolutionWithTheDesignsDisplacement) {
     const ExampleRun& run = example(name);
     SCOPED_TRACE(name);
     const Csv csv = read_csv(run.dir / "svaj.csv");
-    std::vector<std::string> header = {"theta [deg]",
+    std::vector<std::string> header = {"cam angle theta [deg]",
                                        "s [mm]",
                                        "v [mm/s]",
                                        "a [mm/s^2]",

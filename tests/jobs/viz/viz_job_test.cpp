@@ -8,6 +8,7 @@
 #include <string>
 
 #include "jobs/viz/viz_outputs.h"
+#include "jobs/viz/viz_plots.h"
 #include "src/error.h"
 #include "tests/support/jobs/job_test_support.h"
 
@@ -63,6 +64,28 @@ TEST(VizJob, ExampleGridIsShownWithinItsFitError) {
   EXPECT_EQ(j["value"], "pressure_kPa");
   EXPECT_NEAR(j["value_range"][0].get<double>(), 80.0, 1e-9);
   EXPECT_NEAR(j["value_range"][1].get<double>(), 120.0, 1e-9);
+}
+
+// A curve along θ that wraps through 360° is drawn up to one edge and on from the other: no line
+// back across the panel, and no gap at the seam.
+TEST(VizJob, CurvesAlongTheAzimuthBreakAtTheSeam) {
+  const Figure fig = viz_preview_figure(run_viz_job(example("scans/sphere_grid.csv")));
+  int fitted = 0;
+  for (const Series& s : fig.panels().front().series()) {
+    if (s.style != Series::Style::line) continue;
+    ++fitted;
+    double lo = 360, hi = 0;
+    for (std::size_t i = 0; i < s.x.size(); ++i) {
+      if (!std::isfinite(s.x[i])) continue;
+      lo = std::min(lo, s.x[i]);
+      hi = std::max(hi, s.x[i]);
+      if (i > 0 && std::isfinite(s.x[i - 1]))
+        EXPECT_LT(std::abs(s.x[i] - s.x[i - 1]), 10.0) << s.label << " at " << s.x[i];
+    }
+    EXPECT_LT(lo, 1e-9) << s.label;
+    EXPECT_GT(hi, 360 - 1e-9) << s.label;
+  }
+  EXPECT_EQ(fitted, 4);
 }
 
 TEST(VizJob, ConstantFieldIsASphereOfThatRadius) {
