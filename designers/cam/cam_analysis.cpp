@@ -122,10 +122,12 @@ CamAnalysis analyse(const PlateCam& cam, std::span<const double> thetas) {
                             speed(b) > 0 ? bisect_sign_change(speed, dip.theta, b) : b});
   }
 
-  if (cam.follower().kind == FollowerKind::FlatFaced) {  // flat face: contact at x = σ s' (envelope of the face lines)
-    const double sigma = cam.sense(), e = cam.follower().offset;
-    const Extremum right = extreme([&](const CamSample& c) { return sigma * c.v - e; });
-    const Extremum left = negated(extreme([&](const CamSample& c) { return -(sigma * c.v - e); }));
+  if (cam.follower().kind == FollowerKind::FlatFaced) {
+    const int sigma = cam.sense();
+    const double e = cam.follower().offset;
+    const auto contact = [&](const CamSample& c) { return face_contact_position(c.v, sigma, e); };
+    const Extremum right = extreme(contact);
+    const Extremum left = negated(extreme([&](const CamSample& c) { return -contact(c); }));
     out.face_width = FaceWidth{left.value, right.value};
   }
   return out;

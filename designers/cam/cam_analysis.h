@@ -27,6 +27,12 @@ struct FaceWidth {
   double width() const { return right - left; }
 };
 
+// Where a flat face touches the cam, along +x of the fixed frame from the follower axis (mm): the
+// envelope of the face lines touches at x = σ s' − e (σ = ±1 the sense of rotation, e the offset).
+inline double face_contact_position(double ds_dtheta, int sigma, double offset) {
+  return sigma * ds_dtheta - offset;
+}
+
 // Largest |s'|, |s''|, |s'''| (mm/rad^k) and where they occur.
 struct MotionExtrema {
   Extremum velocity;

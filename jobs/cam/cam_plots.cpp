@@ -1,8 +1,10 @@
 #include "jobs/cam/cam_plots.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
+#include "designers/cam/cam_frame.h"
 #include "src/number_text.h"
 #include "src/nurbs/tessellation.h"
 #include "src/units.h"
@@ -76,6 +78,30 @@ void add_circle(Plot& plot, std::string label, double radius, Series::Style styl
   add_points(plot, std::move(label), points, style, "#999999");
 }
 
+bool flat_faced(const CamDesignStage& d) {
+  return std::holds_alternative<PlateCam>(d.cam) &&
+         d.project.cam.follower.kind == FollowerKind::FlatFaced;
+}
+
+// What matters for a flat face instead of its fixed pressure angle: where along the face the cam
+// touches it (from the follower axis), and the extent the face must have (the analysis's).
+void show_face_contact(Plot& plot, const CamDesignStage& d, const CamAnalysisStage& a,
+                       std::vector<double> x_deg, const std::vector<double>& ds_dtheta) {
+  plot.y_label = "contact on the face [mm]";
+  const int sigma = sense(d.project.cam.rotation);
+  const double e = d.project.cam.follower.offset;
+  std::vector<double> contact;
+  for (double v : ds_dtheta) contact.push_back(face_contact_position(v, sigma, e));
+  plot.add(series("", std::move(x_deg), std::move(contact)));
+  const std::optional<FaceWidth>& width = std::get<PlateCamAnalysis>(a.cam).analysis.face_width;
+  if (!width) return;
+  plot.add_horizontal_line(width->right,
+                           "face needs " + number_text(width->width()) + " mm, from " +
+                               number_text(width->left) + " to " + number_text(width->right),
+                           kJumpColor);
+  plot.add_horizontal_line(width->left, "", kJumpColor);
+}
+
 }  // namespace
 
 Figure svaj_figure(const CamDesignStage& d, const CamAnalysisStage& a, const SvajFigureOptions& o) {
@@ -110,7 +136,12 @@ Figure svaj_figure(const CamDesignStage& d, const CamAnalysisStage& a, const Sva
       }
     }
   }
-  if (o.pressure_panel) {
+  if (o.pressure_panel && flat_faced(d)) {
+    Plot& plot = f.add_panel();
+    cam_angle_axis(plot);
+    show_face_contact(plot, d, a, x, m.v);
+    mark_segments(d, plot, false, o.draggable_boundaries);
+  } else if (o.pressure_panel) {
     Plot& plot = f.add_panel();
     plot.y_label = "pressure angle [deg]";
     cam_angle_axis(plot);
@@ -145,7 +176,15 @@ Figure analysis_figure(const CamDesignStage& d, const CamAnalysisStage& a) {
       pitch.push_back(s.pitch_curvature != 0 ? 1 / s.pitch_curvature : NAN);
     }
     for (auto* v : {&phi, &contour, &pitch}) close(*v);
-    pressure.add(series("", x, phi));
+    if (flat_faced(d)) {
+      f.title = "Contact on the face and radius of curvature";
+      std::vector<double> v;
+      for (const CamSample& s : p->analysis.samples) v.push_back(s.v);
+      close(v);
+      show_face_contact(pressure, d, a, x, v);
+    } else {
+      pressure.add(series("", x, phi));
+    }
     radius.add(series("contour", x, contour));
     const Follower& follower = d.project.cam.follower;
     if (follower.kind == FollowerKind::Roller) {
@@ -179,47 +218,71 @@ Figure analysis_figure(const CamDesignStage& d, const CamAnalysisStage& a) {
   return f;
 }
 
-Figure profile_figure(const CamDesignStage& d, const CamAnalysisStage& a,
-                      const CamConversionStage& c) {
+namespace {
+
+Figure plate_profile_figure(const CamDesignStage& d, const CamAnalysisStage& a,
+                            const CamConversionStage& c, const PlateProfile& profile) {
   Figure f(800, 800);
   Plot& plot = f.add_panel();
   plot.equal_aspect = true;
   plot.x_label = "x [mm]";
   plot.y_label = "y [mm]";
-  if (const auto* profile = std::get_if<PlateProfile>(&c.profile)) {
-    const NurbsCurve2d& curve = profile->curve;
-    f.title = "Cam profile: degree " + std::to_string(curve.degree()) + ", " +
-              std::to_string(curve.size()) + " control points, " +
-              std::to_string(c.conversion.arcs.size()) + " arcs";
-    add_points(plot, "contour (NURBS)", tessellate(curve, 2000).points, Series::Style::line,
-               "#0072b2");
-    add_points(plot, "control polygon", curve.control_points(), Series::Style::line_markers,
-               "#cc79a7");
-    add_circle(plot, "base circle", d.project.cam.base_radius, Series::Style::dashed);
-    if (d.project.cam.follower.kind == FollowerKind::Roller)
-      add_points(plot, "pitch curve", std::get<PlateCamAnalysis>(a.cam).curves.pitch,
-                 Series::Style::dashed, "#009e73");
-  } else {
-    const NurbsCurve3d& track = std::get<CylindricalTrack>(c.profile).curve;
-    f.title = "Track centre line, developed: degree " + std::to_string(track.degree()) + ", " +
-              std::to_string(track.size()) + " control points";
-    plot.equal_aspect = false;
-    plot.x_label = "arc length on the pitch cylinder [mm]";
-    plot.y_label = "z [mm]";
-    std::vector<double> x, z;
-    const NurbsCurve3d::Points centre = tessellate(track, 2000).points;
-    const double psi0 = std::atan2(centre.front().y(), centre.front().x());
-    double previous = psi0;
-    for (const Eigen::Vector3d& p : centre) {
-      const double psi =
-          previous + std::remainder(std::atan2(p.y(), p.x()) - previous, 2 * std::numbers::pi);
-      previous = psi;
-      x.push_back((psi - psi0) * d.project.cam.cylinder_radius);
-      z.push_back(p.z());
-    }
-    plot.add(series("track centre (NURBS)", std::move(x), std::move(z)));
-  }
+  const NurbsCurve2d& curve = profile.curve;
+  f.title = "Cam profile: degree " + std::to_string(curve.degree()) + ", " +
+            std::to_string(curve.size()) + " control points, " +
+            std::to_string(c.conversion.arcs.size()) + " arcs";
+  add_points(plot, "contour (NURBS)", tessellate(curve, 2000).points, Series::Style::line,
+             "#0072b2");
+  add_points(plot, "control polygon", curve.control_points(), Series::Style::line_markers,
+             "#cc79a7");
+  add_circle(plot, "base circle", d.project.cam.base_radius, Series::Style::dashed);
+  if (d.project.cam.follower.kind == FollowerKind::Roller)
+    add_points(plot, "pitch curve", std::get<PlateCamAnalysis>(a.cam).curves.pitch,
+               Series::Style::dashed, "#009e73");
   return f;
+}
+
+// The track centre line on the pitch cylinder unrolled at 1:1, each point at the cam angle θ that
+// brings it under the roller (cam_frame.h): θ = 0 at the left and the follower passing from left
+// to right, so that the track reads like the motion program.
+Figure developed_track_figure(const CamDesignStage& d, const NurbsCurve3d& track) {
+  const CamDesign& cam = d.project.cam;
+  std::vector<std::pair<double, double>> points;  // (θ, z)
+  for (const Eigen::Vector3d& p : tessellate(track, 2000).points) {
+    double theta =
+        std::fmod(cam_angle(std::atan2(p.y(), p.x()), cam.rotation), 2 * std::numbers::pi);
+    if (theta < 0) theta += 2 * std::numbers::pi;
+    points.emplace_back(theta, p.z());
+  }
+  std::sort(points.begin(), points.end());
+  points.emplace_back(2 * std::numbers::pi, points.front().second);
+  std::vector<double> x, z;
+  for (const auto& [theta, height] : points) {
+    x.push_back(cam.cylinder_radius * theta);
+    z.push_back(height);
+  }
+  // As wide as the page and as high as the track needs at 1:1, within reason.
+  const auto [lo, hi] = std::minmax_element(z.begin(), z.end());
+  const double length = 2 * std::numbers::pi * cam.cylinder_radius;
+  Figure f(1000, std::clamp(190 + 900 * 1.2 * (*hi - *lo) / length, 300.0, 900.0));
+  f.title = "Track centre line, developed at true aspect: degree " +
+            std::to_string(track.degree()) + ", " + std::to_string(track.size()) +
+            " control points";
+  Plot& plot = f.add_panel();
+  plot.equal_aspect = true;
+  plot.x_label = "Rc·θ, the pitch cylinder developed in the direction of rotation [mm]";
+  plot.y_label = "z [mm]";
+  plot.add(series("track centre (NURBS)", std::move(x), std::move(z)));
+  return f;
+}
+
+}  // namespace
+
+Figure profile_figure(const CamDesignStage& d, const CamAnalysisStage& a,
+                      const CamConversionStage& c) {
+  if (const auto* profile = std::get_if<PlateProfile>(&c.profile))
+    return plate_profile_figure(d, a, c, *profile);
+  return developed_track_figure(d, std::get<CylindricalTrack>(c.profile).curve);
 }
 
 Figure conversion_error_figure(const CamConversionStage& c, bool log_scale) {

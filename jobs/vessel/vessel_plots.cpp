@@ -16,6 +16,8 @@ namespace {
 const char* kDesignColor = "#0072b2";
 const char* kPresetColor = "#999999";
 const char* kFlagColor = "#d55e00";
+const char* kPresetRangeColor = "#0072b2";  // the preset's compressive range
+constexpr double kCylinderShare = 0.15;  // of the head's meridian length, shown left of junction A
 
 Series curvature_series(std::string label, const std::vector<CurvatureSample>& samples,
                         Series::Style style, std::string color) {
@@ -34,13 +36,21 @@ Series stress_series(std::string label, const StressProfile& p, bool hoop, Serie
   return s;
 }
 
-void mark_compressive_bands(Plot& plot, const StressProfile& p, const std::string& whose,
-                            std::string color) {
+// Where σθ < 0: the design's ranges as bands, the preset's as labelled lines at their ends in the
+// preset's colour (bands on bands would blend), each with its minimum annotated.
+void mark_compressive_ranges(Plot& plot, const StressProfile& p, bool preset) {
   for (std::size_t i = 0; i < p.compressive_hoop.size(); ++i) {
     const CompressiveBand& b = p.compressive_hoop[i];
-    plot.add_band(b.s_from, b.s_to, i == 0 ? "compressive hoop stress (" + whose + ")" : "", color);
+    if (preset) {
+      // Labelled at its end: its start is often junction A, which has its own label.
+      plot.add_vertical_line(b.s_from, "", kPresetRangeColor);
+      plot.add_vertical_line(b.s_to, "preset σθ < 0 up to here", kPresetRangeColor);
+    } else {
+      plot.add_band(b.s_from, b.s_to, i == 0 ? "compressive hoop stress (design)" : "", kFlagColor);
+    }
     plot.add_annotation(0.5 * (b.s_from + b.s_to), b.min_hoop_stress,
-                        "σθ " + format_trimmed(b.min_hoop_stress, 1) + " MPa");
+                        std::string(preset ? "preset " : "") + "σθ " +
+                            format_trimmed(b.min_hoop_stress, 1) + " MPa");
   }
 }
 
@@ -95,17 +105,23 @@ Figure stress_figure(const VesselSolveStage& r) {
   f.title = "Membrane stresses at " + format_trimmed(r.design.pressure, 3) + " MPa, wall " +
             format_trimmed(r.design.thickness, 3) + " mm";
   Plot& plot = f.add_panel();
-  plot.x_label = "meridian arc length s from junction A [mm] (cylinder < 0, apex at the right)";
+  plot.x_label =
+      "meridian arc length s from junction A [mm] (s < 0: the cylinder, constant stresses; apex "
+      "at the right)";
   plot.y_label = "membrane stress [MPa]";
+  // The head fills the width: of the cylinder, whose membrane stresses are constant, only a stub.
+  double head_length = 0;
+  for (const StressSample& k : s.stresses.samples) head_length = std::max(head_length, k.s);
+  if (head_length > 0) plot.x_range = AxisRange{-kCylinderShare * head_length, head_length};
   if (s.preset) {
     const StressProfile& preset = s.preset->stresses;
     plot.add(stress_series("σφ preset", preset, false, Series::Style::dashed, "#56b4e9"));
     plot.add(stress_series("σθ preset", preset, true, Series::Style::dashed, "#e69f00"));
-    mark_compressive_bands(plot, preset, "preset", kPresetColor);
+    mark_compressive_ranges(plot, preset, true);
   }
   plot.add(stress_series("σφ meridional", s.stresses, false, Series::Style::line, kDesignColor));
   plot.add(stress_series("σθ hoop", s.stresses, true, Series::Style::line, kFlagColor));
-  mark_compressive_bands(plot, s.stresses, "design", kFlagColor);
+  mark_compressive_ranges(plot, s.stresses, false);
   plot.add_horizontal_line(0.0);
   plot.add_vertical_line(0.0, "junction A");
   return f;

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "jobs/cam/cam_plots.h"
 #include "jobs/cam/cam_report.h"
 #include "src/error.h"
 #include "src/number_text.h"
@@ -216,6 +217,55 @@ TEST(CamJob, StagesHoldTheAlternativeOfTheCam) {
     EXPECT_EQ(issue.derivative, 3);
     EXPECT_NEAR(std::abs(issue.jump()), 4 * kPi * kPi * 20 / std::pow(kPi / 2, 3), 1e-9);
   }
+}
+
+// The developed track of a cylindrical cam reads like its motion program: at x = Rc·θ it is at
+// the height z0 + s(θ) the follower has at cam angle θ, over 0 ≤ x ≤ 2π·Rc, drawn at 1:1.
+TEST(CamJob, DevelopedTrackFollowsTheDirectionOfRotationAtTrueAspect) {
+  const CamJobResult& r = example("cylindrical").result;
+  const Figure f = profile_figure(r.design, r.analysis, r.conversion);
+  const Plot& plot = f.panels().front();
+  EXPECT_TRUE(plot.equal_aspect);
+  const Series& track = plot.series().front();
+  const double rc = r.project().cam.cylinder_radius, z0 = r.project().cam.z0;
+  EXPECT_NEAR(track.x.front(), 0.0, 1e-9);
+  EXPECT_NEAR(track.x.back(), 2 * kPi * rc, 1e-9);
+  ASSERT_TRUE(std::is_sorted(track.x.begin(), track.x.end()));
+  for (double degrees : {20.0, 100.0, 150.0, 200.0, 260.0, 330.0}) {
+    const double theta = degrees * kPi / 180;
+    const auto at = std::lower_bound(track.x.begin(), track.x.end(), rc * theta);
+    const std::size_t i = static_cast<std::size_t>(at - track.x.begin());
+    const double t = (rc * theta - track.x[i - 1]) / (track.x[i] - track.x[i - 1]);
+    const double z = track.y[i - 1] + t * (track.y[i] - track.y[i - 1]);
+    double s[4];
+    r.design.program.derivatives(theta, 0, s);
+    EXPECT_NEAR(z, z0 + s[0], 0.05) << degrees << "°";  // 2000 samples, linear interpolation
+  }
+}
+
+// A flat face's pressure angle is fixed by its geometry; its plots show instead where the cam
+// touches the face, x = σ s' − e from the axis, with the width the face needs from the analysis.
+TEST(CamJob, FlatFacedPlotsShowTheContactOnTheFaceInsteadOfThePressureAngle) {
+  const CamJobResult& r = example("flat_faced").result;
+  const FaceWidth width = plate_analysis(r).face_width.value();
+  SvajFigureOptions with_pressure;
+  with_pressure.pressure_panel = true;
+  const Figure analysis = analysis_figure(r.design, r.analysis);
+  const Figure svaj = svaj_figure(r.design, r.analysis, with_pressure);
+  for (const Plot* plot : {&analysis.panels().front(), &svaj.panels().back()}) {
+    EXPECT_EQ(plot->y_label, "contact on the face [mm]");
+    const std::vector<double>& contact = plot->series().front().y;
+    const auto [lo, hi] = std::minmax_element(contact.begin(), contact.end());
+    EXPECT_NEAR(*lo, width.left, 1e-3);  // grid samples against the refined extremes
+    EXPECT_NEAR(*hi, width.right, 1e-3);
+    ASSERT_EQ(plot->horizontal_lines().size(), 2u);
+    EXPECT_EQ(plot->horizontal_lines()[0].value, width.right);
+    EXPECT_EQ(plot->horizontal_lines()[1].value, width.left);
+  }
+  // Followers with a pressure angle keep its panel.
+  const CamJobResult& roller = example("roller").result;
+  EXPECT_EQ(analysis_figure(roller.design, roller.analysis).panels().front().y_label,
+            "pressure angle [deg]");
 }
 
 // The motion curves are sampled segment by segment: both one-sided values of a jump appear at the

@@ -6,9 +6,11 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
 #include "jobs/report/report_number.h"
+#include "jobs/vessel/vessel_plots.h"
 #include "src/error.h"
 #include "tests/support/jobs/vessel_job_support.h"
 
@@ -174,6 +176,40 @@ TEST(VesselOutputs, CompressiveHoopStressIsFlagged) {
   ASSERT_EQ(j["warnings"].size(), 1u);
   EXPECT_THAT(j["warnings"][0].get<std::string>(), HasSubstr("compressive hoop stress down to"));
   EXPECT_THAT(read_text(dir / "stress.svg"), HasSubstr("compressive hoop stress (design)"));
+}
+
+// The stress plot spends its width on the head (the cylinder's stresses are constant: a stub of
+// 15 % of the head's meridian length), and the preset's compressive range is drawn apart from the
+// design's band: lines at its ends in its own colour, never a second band on top.
+TEST(VesselOutputs, StressPlotShowsTheHeadAndTellsTheCompressiveRangesApart) {
+  std::vector<std::string> warnings;
+  const VesselJobResult r =
+      run_vessel_job(read_vessel_project(example("torispherical_100_6.xml"), warnings));
+  const VesselSolution& s = r.solved.solution;
+  ASSERT_TRUE(s.preset);
+  const Figure f = stress_figure(r.solved);
+  const Plot& plot = f.panels().front();
+  double head = 0;
+  for (const StressSample& k : s.stresses.samples) head = std::max(head, k.s);
+  ASSERT_TRUE(plot.x_range);
+  EXPECT_NEAR(plot.x_range->min, -0.15 * head, 1e-9);
+  EXPECT_NEAR(plot.x_range->max, head, 1e-9);
+  // Bands: the design's compressive ranges only.
+  ASSERT_EQ(plot.bands().size(), s.stresses.compressive_hoop.size());
+  for (std::size_t i = 0; i < plot.bands().size(); ++i) {
+    EXPECT_EQ(plot.bands()[i].x0, s.stresses.compressive_hoop[i].s_from);
+    EXPECT_EQ(plot.bands()[i].x1, s.stresses.compressive_hoop[i].s_to);
+  }
+  // The preset's: a line at each end, in a colour no band has.
+  const std::vector<CompressiveBand>& preset = s.preset->stresses.compressive_hoop;
+  ASSERT_FALSE(preset.empty());
+  for (const CompressiveBand& b : preset)
+    for (const double end : {b.s_from, b.s_to}) {
+      const auto line = std::find_if(plot.vertical_lines().begin(), plot.vertical_lines().end(),
+                                     [&](const ReferenceLine& l) { return l.value == end; });
+      ASSERT_NE(line, plot.vertical_lines().end()) << end;
+      for (const Band& band : plot.bands()) EXPECT_NE(line->color, band.color);
+    }
 }
 
 TEST(VesselOutputs, BrokenProjectNamesTheLineAndWritesNothing) {

@@ -79,8 +79,9 @@ TEST(VizJob, CurvesAlongTheAzimuthBreakAtTheSeam) {
       if (!std::isfinite(s.x[i])) continue;
       lo = std::min(lo, s.x[i]);
       hi = std::max(hi, s.x[i]);
-      if (i > 0 && std::isfinite(s.x[i - 1]))
+      if (i > 0 && std::isfinite(s.x[i - 1])) {
         EXPECT_LT(std::abs(s.x[i] - s.x[i - 1]), 10.0) << s.label << " at " << s.x[i];
+      }
     }
     EXPECT_LT(lo, 1e-9) << s.label;
     EXPECT_GT(hi, 360 - 1e-9) << s.label;
