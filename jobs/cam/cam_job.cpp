@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "designers/cam/cam_frame.h"
 #include "designers/cam/contour_polar_function.h"
@@ -280,9 +281,17 @@ CamJobResult run_cam_job(const CamProject& project, const CamJobOptions& options
   check_tolerance(project);  // before the work of the first stages
   CamDesignStage design = design_cam(project);
   CamAnalysisStage analysis = analyse_cam(design, options);
-  CamConversionStage conversion = convert_cam(design, options);
+  std::optional<CamConversionStage> conversion;
+  try {
+    conversion = convert_cam(design, options);
+  } catch (const InputError& e) {
+    const auto* plate = std::get_if<PlateCamAnalysis>(&analysis.cam);
+    if (!plate || plate->analysis.undercut.empty()) throw;
+    throw InfeasibleCamError(std::make_shared<const InfeasibleCam>(
+        InfeasibleCam{std::move(design), std::move(analysis), e.what()}));
+  }
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  return {std::move(design), std::move(analysis), std::move(conversion), seconds};
+  return {std::move(design), std::move(analysis), std::move(*conversion), seconds};
 }
 
 }  // namespace polarform

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <variant>
@@ -24,6 +25,7 @@
 #include "designers/convert/degree_limited.h"
 #include "designers/convert/polar_conversion.h"
 #include "jobs/project/cam_project.h"
+#include "src/error.h"
 
 namespace polarform {
 
@@ -159,7 +161,29 @@ struct CamJobResult {
 PolarFunction cam_profile_function(const CamDesign& design);
 double track_height_offset(const CamDesign& design);
 
-// Throws InputError (bad design, undercut, …) or NumericalError with a message naming the cause.
+// A plate cam whose contour the analyses show to undercut (or cusp): no profile can be made, so
+// nothing is converted; the design and analysis stages say where, `reason` why (the converter's
+// message).
+struct InfeasibleCam {
+  CamDesignStage design;
+  CamAnalysisStage analysis;
+  std::string reason;
+};
+
+// What run_cam_job throws for such a design: an InputError (bad input, exit 2) that carries the
+// stages, so that a front end can still show and write the analyses.
+class InfeasibleCamError : public InputError {
+ public:
+  explicit InfeasibleCamError(std::shared_ptr<const InfeasibleCam> cam)
+      : InputError(cam->reason), cam_(std::move(cam)) {}
+  const InfeasibleCam& cam() const { return *cam_; }
+
+ private:
+  std::shared_ptr<const InfeasibleCam> cam_;
+};
+
+// Throws InfeasibleCamError (an undercut contour), InputError (bad design, …) or NumericalError
+// with a message naming the cause.
 CamJobResult run_cam_job(const CamProject& project, const CamJobOptions& options = {});
 
 }  // namespace polarform

@@ -30,7 +30,7 @@ namespace {
 
 using json = nlohmann::ordered_json;
 
-std::string svaj_csv(const CamJobResult& r) {
+std::string svaj_csv(const CamDesignStage& design, const CamAnalysisStage& analysis) {
   std::vector<std::string> headers = {"cam angle theta [deg]",
                                       "s [mm]",
                                       "v [mm/s]",
@@ -39,8 +39,8 @@ std::string svaj_csv(const CamJobResult& r) {
                                       "ds/dtheta [mm/rad]",
                                       "d2s/dtheta2 [mm/rad^2]",
                                       "d3s/dtheta3 [mm/rad^3]"};
-  const auto* plate = std::get_if<PlateCamAnalysis>(&r.analysis.cam);
-  const auto* cylindrical = std::get_if<CylindricalCamAnalysis>(&r.analysis.cam);
+  const auto* plate = std::get_if<PlateCamAnalysis>(&analysis.cam);
+  const auto* cylindrical = std::get_if<CylindricalCamAnalysis>(&analysis.cam);
   if (plate)
     for (const char* h : {"pressure angle [deg]", "contour radius of curvature [mm]",
                           "pitch radius of curvature [mm]"})
@@ -48,11 +48,11 @@ std::string svaj_csv(const CamJobResult& r) {
   else
     headers.push_back("pressure angle at pitch radius [deg]");
   CsvWriter csv(headers);
-  const std::vector<double>& angles = r.analysis.angles;
+  const std::vector<double>& angles = analysis.angles;
   for (std::size_t i = 0; i < angles.size(); ++i) {
     double d[4];
-    r.design.program.derivatives(angles[i], 3, d);
-    const Kinematics& k = r.analysis.kinematics[i];
+    design.program.derivatives(angles[i], 3, d);
+    const Kinematics& k = analysis.kinematics[i];
     std::vector<double> row = {angles[i] * kDegreesPerRadian,
                                k.displacement,
                                k.velocity,
@@ -145,6 +145,41 @@ std::string html_report(const CamJobResult& r, const CamOutputOptions& o, const 
   return html.html();
 }
 
+// The report of an infeasible design: what was asked, what the analyses found, why no profile
+// could be made, and the plots that show where.
+std::string infeasible_html_report(const InfeasibleCam& cam, const CamOutputOptions& o,
+                                   const json& report,
+                                   const std::map<std::string, std::string>& svgs) {
+  HtmlReport html("polarform cam report: " + o.design_name + " (INFEASIBLE)");
+  const auto pairs = [](const std::vector<KeyFigure>& figures) {
+    std::vector<std::pair<std::string, std::string>> out;
+    for (const KeyFigure& f : figures) out.emplace_back(f.name, f.value);
+    return out;
+  };
+  html.add_heading("INFEASIBLE design: no profile was written");
+  html.add_paragraph(cam.reason);
+  html.add_paragraph(
+      "The contour undercuts where analysis.svg shades the cam angles in its radius-of-curvature "
+      "panel: there the cutter would remove material the contour needs. Increase the base "
+      "radius, lengthen the segment or choose a softer law there.");
+  html.add_heading("Design");
+  html.add_key_figures(pairs(cam_design_inputs(cam.design)));
+  html.add_heading("Key results");
+  html.add_key_figures(pairs(cam_key_results(cam.design, cam.analysis, nullptr)));
+  for (const std::string& w : cam.analysis.warnings) html.add_paragraph("Warning: " + w);
+  if (!cam.design.continuity.empty()) {
+    html.add_heading("Continuity of the motion program");
+    for (const ContinuityIssue& issue : cam.design.continuity) html.add_paragraph(issue.message());
+  }
+  html.add_heading("Motion and analyses");
+  html.add_svg(svgs.at("analysis.svg"),
+               "Pressure angle and radii of curvature; the undercut ranges shaded.");
+  html.add_svg(svgs.at("svaj.svg"),
+               "Displacement, velocity, acceleration and jerk against cam angle.");
+  html.add_file_list(report["files"].get<std::vector<std::string>>());
+  return html.html();
+}
+
 }  // namespace
 
 std::map<std::string, std::string> render_cam_outputs(const CamJobResult& r,
@@ -207,7 +242,7 @@ std::map<std::string, std::string> render_cam_outputs(const CamJobResult& r,
   content[stem + ".igs"] = igs.str(iges);
   content[stem + ".stp"] = stp.str(step);
   content[stem + ".x3d"] = x3d.str("polarform cam " + o.design_name);
-  content["svaj.csv"] = svaj_csv(r);
+  content["svaj.csv"] = svaj_csv(r.design, r.analysis);
   const std::map<std::string, std::string> svgs = {
       {"svaj.svg", svg_document(svaj_figure(r.design, r.analysis))},
       {"analysis.svg", svg_document(analysis_figure(r.design, r.analysis))},
@@ -225,6 +260,40 @@ std::vector<std::string> write_cam_outputs(const CamJobResult& r, const std::fil
                                            const CamOutputOptions& o) {
   // Everything is rendered in memory first, so a failure writes nothing.
   const std::map<std::string, std::string> content = render_cam_outputs(r, o);
+  write_files_atomically(dir, content);
+  return report_file_list(content);
+}
+
+std::map<std::string, std::string> render_infeasible_cam_outputs(const InfeasibleCam& cam,
+                                                                 const CamOutputOptions& o) {
+  std::map<std::string, std::string> content;
+  content["svaj.csv"] = svaj_csv(cam.design, cam.analysis);
+  const std::map<std::string, std::string> svgs = {
+      {"svaj.svg", svg_document(svaj_figure(cam.design, cam.analysis))},
+      {"analysis.svg", svg_document(analysis_figure(cam.design, cam.analysis))}};
+  content.insert(svgs.begin(), svgs.end());
+  const std::vector<std::string> files = report_file_list(content);
+  const json report = cam_infeasible_report_json(cam, files);
+  content["report.json"] = report_json_text(report);
+  content["report.html"] = infeasible_html_report(cam, o, report, svgs);
+  return content;
+}
+
+std::filesystem::path infeasible_outputs_dir(const std::filesystem::path& out) {
+  std::error_code ec;
+  const bool fresh = !std::filesystem::exists(out, ec) ||
+                     (std::filesystem::is_directory(out, ec) && std::filesystem::is_empty(out, ec));
+  if (fresh) return out;
+  std::filesystem::path sibling = out;
+  if (!sibling.has_filename()) sibling = sibling.parent_path();  // "out/" -> "out"
+  sibling += ".infeasible";
+  return sibling;
+}
+
+std::vector<std::string> write_infeasible_cam_outputs(const InfeasibleCam& cam,
+                                                      const std::filesystem::path& dir,
+                                                      const CamOutputOptions& o) {
+  const std::map<std::string, std::string> content = render_infeasible_cam_outputs(cam, o);
   write_files_atomically(dir, content);
   return report_file_list(content);
 }

@@ -29,4 +29,18 @@ std::map<std::string, std::string> render_cam_outputs(const CamJobResult& r,
 std::vector<std::string> write_cam_outputs(const CamJobResult& r, const std::filesystem::path& dir,
                                            const CamOutputOptions& options = {});
 
+// What an infeasible design (an undercut contour) still shows: svaj.csv, svaj.svg, analysis.svg
+// (the undercut shaded), report.json ("feasible": false) and report.html (marked INFEASIBLE); no
+// CAD file.
+std::map<std::string, std::string> render_infeasible_cam_outputs(
+    const InfeasibleCam& cam, const CamOutputOptions& options = {});
+
+// Where those go for `--out out`: out itself when it does not exist or is empty, else the sibling
+// "out.infeasible", so that a failed run never alters an earlier run's outputs.
+std::filesystem::path infeasible_outputs_dir(const std::filesystem::path& out);
+
+std::vector<std::string> write_infeasible_cam_outputs(const InfeasibleCam& cam,
+                                                      const std::filesystem::path& dir,
+                                                      const CamOutputOptions& options = {});
+
 }  // namespace polarform

@@ -154,9 +154,21 @@ json cam_report_json(const CamJobResult& r, const std::vector<std::string>& file
   json j;
   j["polarform_version"] = POLARFORM_VERSION;
   j["command"] = "cam";
+  j["feasible"] = true;
   j.update(cam_report_fields(r.design, r.analysis, &r.conversion));
   j["files"] = files;
   j["seconds"] = r.seconds;
+  return j;
+}
+
+json cam_infeasible_report_json(const InfeasibleCam& cam, const std::vector<std::string>& files) {
+  json j;
+  j["polarform_version"] = POLARFORM_VERSION;
+  j["command"] = "cam";
+  j["feasible"] = false;
+  j["infeasible_reason"] = cam.reason;
+  j.update(cam_report_fields(cam.design, cam.analysis, nullptr));
+  j["files"] = files;
   return j;
 }
 

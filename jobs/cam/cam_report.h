@@ -19,8 +19,13 @@ nlohmann::ordered_json cam_report_fields(const CamDesignStage& design,
                                          const CamAnalysisStage& analysis,
                                          const CamConversionStage* conversion);
 
-// The whole report of a finished job.
+// The whole report of a finished job ("feasible": true).
 nlohmann::ordered_json cam_report_json(const CamJobResult& r,
                                        const std::vector<std::string>& files);
+
+// The report of an infeasible design: "feasible": false, the reason, and the design's and the
+// analyses' fields (no conversion).
+nlohmann::ordered_json cam_infeasible_report_json(const InfeasibleCam& cam,
+                                                  const std::vector<std::string>& files);
 
 }  // namespace polarform

@@ -27,6 +27,20 @@ struct CamArgs {
   bool lenient = false;
 };
 
+// An infeasible design's analyses, written where they alter no earlier run's outputs; what the
+// error message adds about them.
+std::string written_analyses(const InfeasibleCam& cam, const std::string& out,
+                             const CamOutputOptions& options) {
+  const std::filesystem::path dir = infeasible_outputs_dir(out);
+  try {
+    write_infeasible_cam_outputs(cam, dir, options);
+  } catch (const std::exception& e) {
+    return " (its analyses could not be written: " + std::string(e.what()) + ")";
+  }
+  return "; no profile written; the analyses of the infeasible design, undercut shaded, are in " +
+         std::filesystem::absolute(dir).string() + " (report.html, analysis.svg)";
+}
+
 void run(const CamArgs& a) {
   std::vector<std::string> warnings;
   CamProject project = read_cam_project(a.design, warnings, unknown_names_policy(a.lenient));
@@ -35,11 +49,17 @@ void run(const CamArgs& a) {
   if (!a.base.empty()) project.conversion.base = a.base == "rqb" ? ArcKind::rqb : ArcKind::quartic;
   if (a.max_degree) project.max_degree = *a.max_degree;
 
-  const CamJobResult r = for_design(a.design, [&] { return run_cam_job(project); });
   CamOutputOptions options;
   options.design_name = std::filesystem::path(a.design).stem().string();
   options.solid_thickness = a.solid;
   options.bore_diameter = a.bore;
+  const CamJobResult r = for_design(a.design, [&] {
+    try {
+      return run_cam_job(project);
+    } catch (const InfeasibleCamError& e) {
+      throw InputError(std::string(e.what()) + written_analyses(e.cam(), a.out, options));
+    }
+  });
   const std::vector<std::string> files = write_cam_outputs(r, a.out, options);
 
   for (const auto* list : {&r.analysis.warnings, &r.conversion.warnings})
@@ -80,7 +100,9 @@ void add_cam_command(CLI::App& app) {
       "cam",
       "Design a plate or cylindrical cam from a project file and export its exact NURBS profile.\n"
       "Writes profile.igs/.stp/.dxf/.x3d (track.* for cylindrical cams), profile_deg3.dxf,\n"
-      "svaj.csv, svaj.svg, analysis.svg, profile.svg, error.svg, report.json and report.html.");
+      "svaj.csv, svaj.svg, analysis.svg, profile.svg, error.svg, report.json and report.html.\n"
+      "An undercut design exits 2 and writes only its analyses (svaj.*, analysis.svg, reports\n"
+      "marked infeasible), into --out if it is empty, else into OUT.infeasible beside it.");
   cmd->add_option("design", args->design, "cam project file (XML, see docs/file-formats.md)")
       ->required()
       ->check(CLI::ExistingFile);

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <set>
 
 #include "tests/support/jobs/cam_job_support.h"
 #include "tests/ui/cli/cli_run.h"
@@ -95,9 +96,6 @@ std::vector<BadProject> bad_projects() {
        ":9: <conversion> attribute 'max-degree': expected an integer, got '2.5'"},
       {"offset_beyond_prime_circle", edited("rpm=\"300\"", "rpm=\"300\" offset=\"60\""),
        "follower offset |e| = 60 mm must be below the prime radius 50 mm"},
-      {"undercut",
-       edited("base-radius=\"40\" roller-radius=\"10\"", "base-radius=\"5\" roller-radius=\"40\""),
-       "not single-valued"},
   };
 }
 
@@ -181,6 +179,56 @@ TEST(CliBadInput, BadOptionsExitTwoAndWriteNothing) {
     EXPECT_NE(run.err.find(c.expected), std::string::npos) << run.err;
     EXPECT_FALSE(fs::exists(out));
   }
+}
+
+// An undercut design is refused (exit 2, no profile), but its analyses are written so that the
+// user sees where: into --out when that holds nothing yet, else beside it (out.infeasible), so
+// that an earlier run's outputs stay as they were.
+TEST(CliBadInput, UndercutDesignWritesItsAnalysesWhereTheyAlterNothing) {
+  const ScratchDir scratch("undercut");
+  const fs::path file = scratch / "undercut.xml";
+  spit(file,
+       edited("base-radius=\"40\" roller-radius=\"10\"", "base-radius=\"5\" roller-radius=\"40\""));
+  const std::set<std::string> analyses = {"analysis.svg", "report.html", "report.json", "svaj.csv",
+                                          "svaj.svg"};
+  const auto files = [](const fs::path& dir) {
+    std::set<std::string> names;
+    for (const auto& [name, content] : snapshot(dir)) names.insert(name);
+    return names;
+  };
+  const auto expect_analyses_in = [&](const fs::path& dir, const CliRun& run) {
+    EXPECT_EQ(run.status, 2) << run.err;
+    EXPECT_EQ(run.out, "");
+    EXPECT_EQ(run.err.rfind("polarform: error: " + file.string() + ": ", 0), 0u) << run.err;
+    EXPECT_NE(run.err.find("not single-valued"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find(fs::absolute(dir).string() + " (report.html"), std::string::npos)
+        << run.err;
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+    EXPECT_EQ(files(dir), analyses);
+    const json j = read_json(dir / "report.json");
+    EXPECT_EQ(j["feasible"], false);
+    EXPECT_NE(j["infeasible_reason"].get<std::string>().find("not single-valued"),
+              std::string::npos);
+    ASSERT_EQ(j["undercut"], true);
+    ASSERT_FALSE(j["undercut_ranges_deg"].empty());
+    const double from = j["undercut_ranges_deg"][0][0], to = j["undercut_ranges_deg"][0][1];
+    EXPECT_LT(from, to);
+    EXPECT_NE(slurp(dir / "report.html").find("INFEASIBLE"), std::string::npos);
+    EXPECT_NE(slurp(dir / "analysis.svg").find("undercut"), std::string::npos);
+  };
+  // A fresh --out: the analyses go there.
+  const fs::path fresh = scratch / "fresh";
+  expect_analyses_in(fresh, run_cli({"cam", file.string(), "--out", fresh.string()}, scratch));
+  // Over an earlier good run: that run's files stay byte for byte; the analyses go beside them.
+  spit(scratch / "good.xml", kGood);
+  const fs::path out = scratch / "out";
+  ASSERT_EQ(run_cli({"cam", (scratch / "good.xml").string(), "--out", out.string(), "-q"}, scratch)
+                .status,
+            0);
+  const std::map<std::string, std::string> before = snapshot(out);
+  expect_analyses_in(scratch / "out.infeasible",
+                     run_cli({"cam", file.string(), "--out", out.string()}, scratch));
+  EXPECT_TRUE(snapshot(out) == before) << "the earlier run's outputs changed";
 }
 
 TEST(CliBadInput, StudyOfABrokenProjectNamesTheFile) {
