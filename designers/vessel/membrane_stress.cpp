@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "designers/vessel/polar_curvature.h"
 #include "src/error.h"
@@ -34,6 +36,72 @@ void check_positive(double value, const char* name, const char* unit) {
   if (!(value > 0.0 && std::isfinite(value)))
     throw InputError(std::string("membrane stresses: ") + name + " " + to_text(value) + " " + unit +
                      ", expected > 0");
+}
+
+// How far from a joint of the meridian its one-sided values are taken, rad.
+constexpr double kJointSide = 1e-10;
+
+// Golden-section search for the extremum of f in [a, b] (min if `minimum`, else max).
+double golden_extremum(const std::function<double(double)>& f, double a, double b, bool minimum) {
+  const double g = (std::sqrt(5.0) - 1) / 2;
+  const auto better = [&](double x, double y) { return minimum ? f(x) < f(y) : f(x) > f(y); };
+  double c = b - g * (b - a), d = a + g * (b - a);
+  for (int k = 0; k < 80 && b - a > 1e-13; ++k) {
+    if (better(c, d)) {
+      b = d;
+      d = c;
+      c = b - g * (b - a);
+    } else {
+      a = c;
+      c = d;
+      d = a + g * (b - a);
+    }
+  }
+  return 0.5 * (a + b);
+}
+
+// The head's sample angles over [0, π/2]: `count` equal steps, both sides of every joint of the
+// meridian (where curvature, and with it the hoop stress, jumps: the closed-form extremes of the
+// standard heads), and every interior extremum of either stress located by golden section — so
+// that the profile's extremes are the stresses' own, not a grid's.
+std::vector<double> head_angles(const PolarFunction& head, const VesselLoad& load, int count) {
+  std::vector<double> angles;
+  for (int i = 0; i < count; ++i)
+    angles.push_back(i == count - 1 ? kHalfPi : kHalfPi * i / (count - 1));
+  std::vector<double> joints;
+  for (const double b : head.breakpoints)
+    if (b > kJointSide && b < kHalfPi - kJointSide) joints.push_back(b);
+  for (const double b : joints) {
+    angles.push_back(b - kJointSide);
+    angles.push_back(b + kJointSide);
+  }
+  std::sort(angles.begin(), angles.end());
+  const auto across_joint = [&](double a, double b) {
+    return std::any_of(joints.begin(), joints.end(), [&](double j) { return a < j && j < b; });
+  };
+  const auto stress = [&](bool hoop) {
+    return [&, hoop](double theta) {
+      const PrincipalRadii r = principal_radii(head, theta);
+      const MembraneForces f = membrane_forces(load.pressure, r.kappa1, r.r2);
+      return hoop ? f.hoop : f.meridional;
+    };
+  };
+  std::vector<double> extrema;
+  const double noise = 1e-9 * load.pressure * load.radius;  // N/mm: rounding, not an extremum
+  for (const bool hoop : {true, false}) {
+    const std::function<double(double)> f = stress(hoop);
+    for (std::size_t i = 1; i + 1 < angles.size(); ++i) {
+      const double a = angles[i - 1], m = angles[i], b = angles[i + 1];
+      if (across_joint(a, b)) continue;
+      const double fa = f(a), fm = f(m), fb = f(b);
+      if (fm < std::min(fa, fb) - noise) extrema.push_back(golden_extremum(f, a, b, true));
+      if (fm > std::max(fa, fb) + noise) extrema.push_back(golden_extremum(f, a, b, false));
+    }
+  }
+  angles.insert(angles.end(), extrema.begin(), extrema.end());
+  std::sort(angles.begin(), angles.end());
+  angles.erase(std::unique(angles.begin(), angles.end()), angles.end());
+  return angles;
 }
 
 }  // namespace
@@ -74,9 +142,8 @@ StressProfile membrane_stresses(const PolarFunction& head, const VesselLoad& loa
   out.samples.push_back(sample(-load.length / 2, 0.0, load.radius, -load.length / 2, cylinder, true));
   out.samples.push_back(sample(0.0, 0.0, load.radius, 0.0, cylinder, true));
   double s = 0.0;
-  for (int i = 0; i < samples; ++i) {
-    const double theta = i == samples - 1 ? kHalfPi : kHalfPi * i / (samples - 1);
-    if (i > 0) s += arc_length(head, out.samples.back().theta, theta);
+  for (const double theta : head_angles(head, load, samples)) {
+    if (out.samples.size() > 2) s += arc_length(head, out.samples.back().theta, theta);
     const double r = head(theta);
     out.samples.push_back(sample(s, theta, r * std::cos(theta), r * std::sin(theta),
                                  principal_radii(head, theta), false));

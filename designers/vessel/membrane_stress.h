@@ -54,8 +54,10 @@ struct CompressiveBand {
 };
 
 struct StressProfile {
-  // Two cylinder samples (s = −length/2 and the junction, cylinder side), then `samples` head
-  // samples at equal steps of θ from 0 (junction, head side) to π/2 (apex).
+  // Two cylinder samples (s = −length/2 and the junction, cylinder side), then the head samples
+  // from θ = 0 (junction, head side) to π/2 (apex), in θ order: `samples` equal steps of θ, both
+  // sides of every joint of the meridian (its breakpoints, where curvature jumps; 1e-10 rad off
+  // the joint) and every interior extremum of N_φ or N_θ located by golden section.
   std::vector<StressSample> samples;
   std::vector<CompressiveBand> compressive_hoop;
 };
