@@ -31,15 +31,24 @@ void check_positive(double value, const char* name, const char* unit) {
                      ", expected > 0");
 }
 
+// κ of a head made of analytic pieces, piece by piece at about 0.5° steps: both one-sided values
+// at every joint.
+std::vector<CurvatureSample> piecewise_curvature(const HeadShape& shape) {
+  std::vector<CurvatureSample> out;
+  for (const PolarFunction& piece : shape.pieces) {
+    const int count =
+        std::max(1, static_cast<int>(std::ceil(360 * (piece.end - piece.start) / kPi)));
+    const std::vector<CurvatureSample> s = sample_curvature(piece, count);
+    out.insert(out.end(), s.begin(), s.end());
+  }
+  return out;
+}
+
 PresetComparison compare_with_preset(const HeadPreset& preset, const VesselDesign& design,
                                      const PolarFunction& head, const VesselLoad& load) {
   PresetComparison out;
   out.shape = head_shape(preset, design.radius);
-  for (const PolarFunction& piece : out.shape.pieces) {
-    const int count = std::max(1, static_cast<int>(std::ceil(360 * (piece.end - piece.start) / kPi)));
-    const std::vector<CurvatureSample> s = sample_curvature(piece, count);
-    out.curvature.insert(out.curvature.end(), s.begin(), s.end());
-  }
+  out.curvature = piecewise_curvature(out.shape);
   for (int i = 0; i <= 1440; ++i) {
     const double theta = kPi * i / 1440;
     const double deviation = std::abs(head(theta) - out.shape.profile(theta));
@@ -47,6 +56,12 @@ PresetComparison compare_with_preset(const HeadPreset& preset, const VesselDesig
   }
   out.stresses = membrane_stresses(out.shape.profile, load);
   return out;
+}
+
+double derivative(const PolarFunction& f, double theta) {
+  double d[2];
+  f.derivatives(theta, 1, d);
+  return d[1];
 }
 
 std::vector<std::string> warnings_for(const VesselSolution& s, const VesselDesign& design) {
@@ -57,7 +72,7 @@ std::vector<std::string> warnings_for(const VesselSolution& s, const VesselDesig
                   " mm; the cylinder continues the head");
   if (std::abs(s.junction_slope) > kSlopeTolerance)
     out.push_back("the head meets the cylinder at a kink of " + degrees(s.junction_slope) +
-                  " (R'(0) = " + short_text(s.synthesis.profile.derivatives(0.0, 1)(1)) + " mm/rad)");
+                  " (R'(0) = " + short_text(derivative(s.profile, 0.0)) + " mm/rad)");
   if (std::abs(s.apex_slope) > kSlopeTolerance)
     out.push_back("the revolved head has a cone point at the apex: the meridian meets the axis at " +
                   degrees(s.apex_slope) + " from the perpendicular (R'(90°) ≠ 0)");
@@ -68,7 +83,36 @@ std::vector<std::string> warnings_for(const VesselSolution& s, const VesselDesig
   return out;
 }
 
+// The preset head itself: its exact meridian, closed-form curvature and stresses (no synthesis).
+VesselSolution solve_exact_head(const VesselDesign& design, const VesselLoad& load) {
+  if (!design.preset) throw InputError("vessel: an exact head needs a <head preset>");
+  if (!design.targets.empty())
+    throw InputError(
+        "vessel: an exact head takes no curvature targets; ask for design=\"curvature\" "
+        "to synthesise a head from them");
+  VesselSolution out;
+  out.exact = exact_head(*design.preset, design.radius);
+  const HeadShape& shape = out.exact->shape;
+  out.profile = shape.profile;
+  out.curvature = piecewise_curvature(shape);
+  double a[3], apex[2];
+  out.profile.derivatives(0.0, 2, a);
+  out.profile.derivatives(kPi / 2, 1, apex);
+  out.depth = shape.depth;
+  out.junction_radius = a[0];
+  out.junction_curvature = polar_curvature(a[0], a[1], a[2]);
+  out.junction_slope = std::atan2(a[1], a[0]);
+  out.apex_slope = std::atan2(apex[1], apex[0]);
+  out.stresses = membrane_stresses(out.profile, load);
+  out.warnings = warnings_for(out, design);
+  return out;
+}
+
 }  // namespace
+
+const char* head_design_name(HeadDesign design) {
+  return design == HeadDesign::exact ? "exact" : "curvature";
+}
 
 PolarFunction head_polar_function(const BSplineFunction& R) {
   PolarFunction f;
@@ -91,7 +135,7 @@ std::vector<CurvatureSample> sample_curvature(const PolarFunction& f, int count)
     const double theta = i == count ? f.end : f.start + (f.end - f.start) * i / count;
     double d[3];
     f.derivatives(theta, 2, d);
-    out.push_back({theta, polar_curvature(d[0], d[1], d[2])});
+    out.push_back({theta, polar_curvature(d[0], d[1], d[2]), d[0], d[1], d[2]});
   }
   return out;
 }
@@ -102,6 +146,8 @@ VesselSolution solve_vessel(const VesselDesign& design) {
   check_positive(design.length, "length", "mm");
   check_positive(design.thickness, "thickness", "mm");
   check_positive(design.pressure, "pressure", "MPa");
+  const VesselLoad load{design.radius, design.length, design.thickness, design.pressure};
+  if (design.head_design == HeadDesign::exact) return solve_exact_head(design, load);
   if (design.targets.empty() && !design.preset)
     throw InputError("vessel: no curvature targets and no head preset to take them from");
 
@@ -125,7 +171,6 @@ VesselSolution solve_vessel(const VesselDesign& design) {
   out.junction_curvature = polar_curvature(at_a(0), at_a(1), at_a(2));
   out.junction_slope = std::atan2(at_a(1), at_a(0));
   out.apex_slope = std::atan2(at_apex(1), at_apex(0));
-  const VesselLoad load{design.radius, design.length, design.thickness, design.pressure};
   out.stresses = membrane_stresses(out.profile, load);
   if (design.preset) out.preset = compare_with_preset(*design.preset, design, out.profile, load);
   out.warnings = warnings_for(out, design);

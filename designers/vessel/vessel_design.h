@@ -11,10 +11,18 @@
 
 #include "designers/convert/polar_function.h"
 #include "designers/vessel/curvature_synthesis.h"
+#include "designers/vessel/exact_head.h"
 #include "designers/vessel/head_preset.h"
 #include "designers/vessel/membrane_stress.h"
 
 namespace polarform {
+
+// What the head is: synthesised from prescribed curvatures (Bae 2002, §5.2), or the preset head
+// itself, exactly (exact_head.h).
+enum class HeadDesign { curvature, exact };
+
+// "curvature", "exact" (the words of the project file).
+const char* head_design_name(HeadDesign design);
 
 struct VesselDesign {
   double radius = 0.0;     // cylinder radius, mm
@@ -29,6 +37,9 @@ struct VesselDesign {
   SynthesisSettings synthesis;
   std::optional<HeadPreset> preset;
   int preset_targets = 48;
+  // exact: the preset head itself (needs a preset and no targets; end conditions and synthesis
+  // settings are not used).
+  HeadDesign head_design = HeadDesign::curvature;
 
   bool operator==(const VesselDesign&) const = default;
 };
@@ -36,6 +47,7 @@ struct VesselDesign {
 struct CurvatureSample {
   double theta = 0.0;  // rad
   double kappa = 0.0;  // 1/mm
+  double R = 0.0, dR = 0.0, d2R = 0.0;  // R(θ), mm, and its derivatives, mm/rad and mm/rad²
 };
 
 struct PresetComparison {
@@ -47,11 +59,14 @@ struct PresetComparison {
 };
 
 struct VesselSolution {
-  SynthesisResult synthesis;
+  SynthesisResult synthesis;       // empty for an exact head
+  std::optional<ExactHead> exact;  // the exact head (HeadDesign::exact)
   // R(θ) on [0, π] for the converter: exact = synthesis.profile; π/2 is a breakpoint so that the
   // apex, where vessel_surfaces splits the converted curve, is an arc junction.
   PolarFunction profile;
-  std::vector<CurvatureSample> curvature;  // κ(θ) at 361 equal steps over [0, π]
+  // κ(θ) at 361 equal steps over [0, π]; an exact head's piece by piece, both one-sided values
+  // at every joint.
+  std::vector<CurvatureSample> curvature;
   double depth = 0.0;               // R(π/2), mm
   double junction_radius = 0.0;     // R(0), mm
   double junction_curvature = 0.0;  // κ(0), 1/mm (the cylinder's meridian has κ = 0)
@@ -63,8 +78,8 @@ struct VesselSolution {
 };
 
 // Throws InputError for a bad design (radius, length, thickness, pressure <= 0, no targets and no
-// preset, preset_targets < 1, and whatever synthesize_profile and head_shape reject) and passes on
-// the synthesis's NumericalError.
+// preset, an exact head without a preset or with targets, preset_targets < 1, and whatever
+// synthesize_profile and head_shape reject) and passes on the synthesis's NumericalError.
 VesselSolution solve_vessel(const VesselDesign& design);
 
 // A B-spline R(θ) on [0, π] as the converter's input: exact, with the apex π/2 as breakpoint.

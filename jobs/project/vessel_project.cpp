@@ -61,7 +61,17 @@ EndCondition read_end(const XmlElementReader& r) {
   return c;
 }
 
-HeadPreset read_head(const XmlElementReader& r, double radius, int& targets) {
+// `curvature_inputs`: the vessel has <curvature>, <end> or <synthesis> elements, which ask for a
+// curvature design unless design="exact" says otherwise (then <curvature> is an error).
+HeadPreset read_head(const XmlElementReader& r, double radius, int& targets, bool curvature_inputs,
+                     bool has_targets, HeadDesign& design) {
+  const bool synthesised = curvature_inputs || r.has("targets");
+  design =
+      r.choice("design", {"exact", "curvature"}, synthesised ? "curvature" : "exact") == "exact"
+          ? HeadDesign::exact
+          : HeadDesign::curvature;
+  if (design == HeadDesign::exact && has_targets)
+    r.fail("design", "design=\"curvature\" with <curvature> targets (an exact head takes none)");
   HeadPreset h;
   const std::string preset = r.choice("preset", {"hemispherical", "ellipsoidal", "torispherical"});
   if (preset == "ellipsoidal") {
@@ -145,10 +155,13 @@ double read_vessel(const XMLElement* e, const XmlElementReader* root, Reader& re
         if (end) er.fail("at", "each end at most once");
         end = read_end(er);
       });
+    const bool curvature_inputs =
+        !curvatures.empty() || !r.children("end").empty() || !r.children("synthesis").empty();
     for (const XMLElement* h : r.children("head"))
       reader.visit(h, [&](const XmlElementReader& hr) {
         if (d.preset) throw InputError(hr.where() + ": expected one <head> per vessel");
-        d.preset = read_head(hr, d.radius, d.preset_targets);
+        d.preset = read_head(hr, d.radius, d.preset_targets, curvature_inputs, !curvatures.empty(),
+                             d.head_design);
       });
     const std::vector<const XMLElement*> settings = r.children("synthesis");
     for (const XMLElement* s : settings)
@@ -249,6 +262,7 @@ std::string vessel_project_xml(const VesselProject& p) {
   if (d.preset) {
     out << "    <head";
     attribute(out, "preset", std::string(head_kind_name(d.preset->kind)));
+    attribute(out, "design", std::string(head_design_name(d.head_design)));
     if (d.preset->kind == HeadKind::ellipsoidal) attribute(out, "ratio", d.preset->ratio);
     if (d.preset->kind == HeadKind::torispherical) {
       attribute(out, "crown", d.preset->crown);

@@ -11,6 +11,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// Samples per conic arc at which an exact head's meridian is measured against its closed form.
+constexpr int kExactHeadSamples = 2000;
+
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
@@ -34,17 +37,27 @@ VesselSolveStage solve_vessel_head(const VesselProject& project) {
   return s;
 }
 
-// Bae 2002, §5.1: convert R(θ) with quasi-uniform base arcs, then revolve it.
+// Bae 2002, §5.1: convert R(θ) with quasi-uniform base arcs (an exact head is already NURBS),
+// then revolve it.
 VesselConversionStage convert_vessel_head(const VesselSolveStage& solved) {
   check_tolerance(solved.project);
   const auto converting = Clock::now();
   VesselConversionStage c;
-  ConversionOptions options;
-  options.tolerance = solved.project.tolerance;
-  c.conversion = convert_polar_function(solved.solution.profile, options);
+  if (const std::optional<ExactHead>& exact = solved.solution.exact) {
+    c.profile = exact->meridian;
+    c.arcs = exact->arcs;
+    c.max_radial_error = exact_head_deviation(exact->meridian, exact->shape, kExactHeadSamples);
+  } else {
+    ConversionOptions options;
+    options.tolerance = solved.project.tolerance;
+    c.conversion = convert_polar_function(solved.solution.profile, options);
+    c.profile = c.conversion->curve;
+    c.arcs = static_cast<int>(c.conversion->arcs.size());
+    c.max_radial_error = c.conversion->max_radial_error;
+  }
   c.convert_seconds = seconds_since(converting);
   const auto revolving = Clock::now();
-  c.surfaces = vessel_surfaces(c.conversion.curve, solved.design.length);
+  c.surfaces = vessel_surfaces(c.profile, solved.design.length);
   c.revolve_seconds = seconds_since(revolving);
   return c;
 }

@@ -2,11 +2,14 @@
 // staged pipeline the studio runs in the background after every edit:
 //   solve    the head R(θ) synthesised from prescribed curvatures (Bae 2002, §5.2) with its
 //            residuals, and the membrane stresses of the design and of the preset it replaces;
-//   convert  the exact NURBS profile within the tolerance with its measured error (§5.1), and
-//            the revolved head and vessel surfaces.
+//   convert  the exact NURBS profile within the tolerance with its measured error (§5.1) — or,
+//            for an exact standard head, its degree-2 meridian measured against the closed
+//            form — and the revolved head and vessel surfaces.
 // The result value is what the studio shows and what the output bundle (vessel_outputs.h)
 // writes. Computing writes nothing.
 #pragma once
+
+#include <optional>
 
 #include "designers/convert/polar_conversion.h"
 #include "designers/vessel/vessel_design.h"
@@ -27,8 +30,13 @@ struct VesselSolveStage {
 VesselSolveStage solve_vessel_head(const VesselProject& project);
 
 struct VesselConversionStage {
-  PolarConversion conversion;  // of solution.profile over [0, π] to project.tolerance
-  VesselSurfaces surfaces;     // revolved from conversion.curve
+  // A synthesised head's R(θ) converted over [0, π] within project.tolerance (Bae 2002, §5.1);
+  // absent for an exact head, whose degree-2 meridian is exported as it is.
+  std::optional<PolarConversion> conversion;
+  NurbsCurve2d profile;           // what is exported and revolved: conversion->curve or the exact
+  int arcs = 0;                   // base-circle arcs, or the exact head's conic arcs
+  double max_radial_error = 0.0;  // measured |ρ − R(θ)| of `profile` against the head's R(θ), mm
+  VesselSurfaces surfaces;        // revolved from `profile`
   double convert_seconds = 0.0, revolve_seconds = 0.0;
 };
 

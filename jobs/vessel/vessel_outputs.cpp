@@ -36,11 +36,9 @@ std::string profile_csv(const VesselSolveStage& r) {
   if (s.preset) headers.insert(headers.end(), {"preset R [mm]", "preset kappa [1/mm]"});
   CsvWriter csv(headers);
   for (const CurvatureSample& c : s.curvature) {
-    double d[3];
-    s.profile.derivatives(c.theta, 2, d);
     std::vector<double> row = {
-        c.theta * kDegreesPerRadian, d[0],   d[1], d[2], d[0] * std::cos(c.theta),
-        d[0] * std::sin(c.theta),    c.kappa};
+        c.theta * kDegreesPerRadian, c.R,    c.dR, c.d2R, c.R * std::cos(c.theta),
+        c.R * std::sin(c.theta),     c.kappa};
     if (s.preset) {
       double e[3];
       s.preset->shape.profile.derivatives(c.theta, 2, e);
@@ -67,24 +65,35 @@ std::string micrometres(double mm) { return format_trimmed(mm * 1e3, 4) + " µm"
 std::string html_report(const VesselJobResult& r, const VesselOutputOptions& o, const json& report,
                         const std::map<std::string, std::string>& svgs) {
   const VesselSolution& s = r.solved.solution;
-  const PolarConversion& c = r.converted.conversion;
+  const VesselConversionStage& c = r.converted;
   const json& stresses = report["stresses"];
   HtmlReport html("polarform vessel report: " + o.design_name);
-  html.add_key_figures(
-      {{"iterations", std::to_string(s.synthesis.iterations)},
-       {"max |κ residual|",
-        number_text(report["synthesis"]["max_abs_residual_per_mm"].get<double>()) + " 1/mm"},
-       {"max condition violation", format_trimmed(s.synthesis.max_violation, 9)},
-       {"head depth", format_trimmed(s.depth, 3) + " mm"},
-       {"tolerance", micrometres(c.tolerance)},
-       {"measured max radial error", micrometres(c.max_radial_error)},
-       {"degree", std::to_string(c.curve.degree())},
-       {"control points", std::to_string(c.curve.size())},
-       {"base-circle arcs", std::to_string(c.arcs.size())},
-       {"max membrane stress",
-        format_trimmed(stresses["max_stress_mpa"].get<double>(), 3) + " MPa"},
-       {"compressive hoop stress", s.stresses.compressive_hoop.empty() ? "none" : "YES"},
-       {"time", format_trimmed(r.seconds.total * 1e3, 1) + " ms"}});
+  std::vector<std::pair<std::string, std::string>> key;
+  if (s.exact) {
+    key.emplace_back("head", s.exact->shape.name + ", exact");
+  } else {
+    key.emplace_back("iterations", std::to_string(s.synthesis.iterations));
+    key.emplace_back(
+        "max |κ residual|",
+        number_text(report["synthesis"]["max_abs_residual_per_mm"].get<double>()) + " 1/mm");
+    key.emplace_back("max condition violation", format_trimmed(s.synthesis.max_violation, 9));
+  }
+  key.emplace_back("head depth", format_trimmed(s.depth, 3) + " mm");
+  key.emplace_back("tolerance", micrometres(r.solved.project.tolerance));
+  key.emplace_back(
+      s.exact ? "measured max radial error against the closed form" : "measured max radial error",
+      micrometres(c.max_radial_error));
+  key.emplace_back("degree", std::to_string(c.profile.degree()));
+  key.emplace_back("control points", std::to_string(c.profile.size()));
+  key.emplace_back(s.exact ? "conic arcs" : "base-circle arcs", std::to_string(c.arcs));
+  key.emplace_back("max membrane stress",
+                   format_trimmed(stresses["max_stress_mpa"].get<double>(), 3) + " MPa");
+  key.emplace_back(
+      "min hoop stress",
+      format_trimmed(stresses["head"]["min_hoop_stress_mpa"].get<double>(), 4) + " MPa");
+  key.emplace_back("compressive hoop stress", s.stresses.compressive_hoop.empty() ? "none" : "YES");
+  key.emplace_back("time", format_trimmed(r.seconds.total * 1e3, 1) + " ms");
+  html.add_key_figures(key);
   if (!s.warnings.empty()) {
     html.add_heading("Warnings");
     for (const std::string& w : s.warnings) html.add_paragraph(w);
@@ -92,8 +101,11 @@ std::string html_report(const VesselJobResult& r, const VesselOutputOptions& o, 
   html.add_heading("Curvature");
   const std::string preset_note =
       s.preset ? "; the preset's curvature dashed, its jumps in orange" : "";
-  html.add_svg(svgs.at("curvature.svg"), "Prescribed curvature targets and the synthesised κ(θ)" +
-                                             preset_note + "; below, the residual at each target.");
+  html.add_svg(svgs.at("curvature.svg"),
+               s.exact ? "The exact head's curvature κ(θ), piece by piece: its jumps are the "
+                         "head's own."
+                       : "Prescribed curvature targets and the synthesised κ(θ)" + preset_note +
+                             "; below, the residual at each target.");
   std::vector<std::vector<std::string>> targets;
   for (const TargetResidual& t : s.synthesis.targets)
     targets.push_back({format_trimmed(t.theta * kDegreesPerRadian, 4), number_text(t.target),
@@ -117,12 +129,18 @@ std::string html_report(const VesselJobResult& r, const VesselOutputOptions& o, 
                "Meridional σφ and hoop σθ along the meridian; shaded: compressive hoop stress.");
   html.add_heading("NURBS profile");
   html.add_svg(svgs.at("profile.svg"), "The exported profile with its control polygon.");
-  std::vector<std::vector<std::string>> arcs;
-  for (const ArcSummary& a : c.arcs)
-    arcs.push_back({format_trimmed(a.start * kDegreesPerRadian, 4),
-                    format_trimmed(a.sweep * kDegreesPerRadian, 4),
-                    format_trimmed(a.max_radial_error * 1e3, 4)});
-  html.add_table({"arc start [deg]", "sweep [deg]", "max radial error [µm]"}, arcs);
+  if (c.conversion) {
+    std::vector<std::vector<std::string>> arcs;
+    for (const ArcSummary& a : c.conversion->arcs)
+      arcs.push_back({format_trimmed(a.start * kDegreesPerRadian, 4),
+                      format_trimmed(a.sweep * kDegreesPerRadian, 4),
+                      format_trimmed(a.max_radial_error * 1e3, 4)});
+    html.add_table({"arc start θ [deg]", "sweep [deg]", "max radial error [µm]"}, arcs);
+  } else {
+    html.add_paragraph(
+        "The head's circular and elliptic arcs are rational quadratic segments (NURBS Book "
+        "§7.5), exact up to rounding; revolved, the head is a (2, 2) surface.");
+  }
   html.add_file_list(report["files"].get<std::vector<std::string>>());
   return html.html();
 }
@@ -146,15 +164,15 @@ std::map<std::string, std::string> render_vessel_outputs(const VesselJobResult& 
   };
 
   // The profile in the meridian plane y = 0 (the surfaces' frame); the DXF as a drawing (x, y).
-  const NurbsCurve3d meridian = in_meridian_plane(r.converted.conversion.curve);
+  const NurbsCurve3d meridian = in_meridian_plane(r.converted.profile);
   IgesWriter profile_igs;
   profile_igs.add(meridian, "HEAD PROFILE");
   write_iges(profile_igs, "profile.igs");
   StepWriter profile_stp(o.design_name + " profile");
   profile_stp.add(meridian, "head profile");
   write_step(profile_stp, "profile.stp");
-  DxfWriter dxf(DxfOptions{std::max(10, r.converted.conversion.curve.degree()), 1e-6});
-  dxf.add(r.converted.conversion.curve, "PROFILE");
+  DxfWriter dxf(DxfOptions{std::max(10, r.converted.profile.degree()), 1e-6});
+  dxf.add(r.converted.profile, "PROFILE");
   content["profile.dxf"] = dxf.str();
 
   IgesWriter head_igs;

@@ -137,10 +137,10 @@ Figure profile_figure(const VesselSolveStage& r, const VesselConversionStage* co
     plot.add(meridian_series("preset", r.solution.preset->shape.profile, 720, Series::Style::dashed,
                              kPresetColor));
   if (converted) {
-    const NurbsCurve2d& c = converted->conversion.curve;
-    f.title = "Head profile: degree " + std::to_string(c.degree()) + ", " +
-              std::to_string(c.size()) + " control points, " +
-              std::to_string(converted->conversion.arcs.size()) + " arcs";
+    const NurbsCurve2d& c = converted->profile;
+    f.title = std::string(r.solution.exact ? "Exact head profile" : "Head profile") + ": degree " +
+              std::to_string(c.degree()) + ", " + std::to_string(c.size()) + " control points, " +
+              std::to_string(converted->arcs) + " arcs";
     // The polygon under the curve; its points marked only while they stay apart.
     const auto polygon_style = c.size() <= 60 ? Series::Style::line_markers : Series::Style::line;
     Series polygon{"control polygon", {}, {}, polygon_style, "#cc79a7"};

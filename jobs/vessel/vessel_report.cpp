@@ -59,23 +59,28 @@ json stresses_json(const StressProfile& p) {
   return j;
 }
 
-json preset_json(const VesselSolveStage& r) {
-  const HeadPreset& h = *r.design.preset;
-  const PresetComparison& c = *r.solution.preset;
-  json j = {{"kind", head_kind_name(h.kind)}, {"name", c.shape.name}};
+// A standard head: kind, its parameters, name and depth, and where its curvature jumps.
+json standard_head_json(const HeadPreset& h, const HeadShape& shape) {
+  json j = {{"kind", head_kind_name(h.kind)}, {"name", shape.name}};
   if (h.kind == HeadKind::ellipsoidal) j["ratio"] = h.ratio;
   if (h.kind == HeadKind::torispherical) {
     j["crown_mm"] = h.crown;
     j["knuckle_mm"] = h.knuckle;
   }
-  j["depth_mm"] = c.shape.depth;
-  j["max_deviation_mm"] = c.max_deviation;
-  j["deviation_at_deg"] = c.deviation_angle * kDegreesPerRadian;
+  j["depth_mm"] = shape.depth;
   j["curvature_jumps"] = json::array();
-  for (const CurvatureJump& k : c.shape.jumps)
+  for (const CurvatureJump& k : shape.jumps)
     j["curvature_jumps"].push_back({{"theta_deg", k.theta * kDegreesPerRadian},
                                     {"kappa_before_per_mm", k.kappa_before},
                                     {"kappa_after_per_mm", k.kappa_after}});
+  return j;
+}
+
+json preset_json(const VesselSolveStage& r) {
+  const PresetComparison& c = *r.solution.preset;
+  json j = standard_head_json(*r.design.preset, c.shape);
+  j["max_deviation_mm"] = c.max_deviation;
+  j["deviation_at_deg"] = c.deviation_angle * kDegreesPerRadian;
   j["stresses"] = stresses_json(c.stresses);
   return j;
 }
@@ -119,7 +124,7 @@ json vessel_report_fields(const VesselSolveStage& r, const VesselConversionStage
                  {"length_mm", d.length},
                  {"thickness_mm", d.thickness},
                  {"pressure_mpa", d.pressure}};
-  j["synthesis"] = synthesis_json(r);
+  j["synthesis"] = s.exact ? json(nullptr) : synthesis_json(r);
   j["targets"] = json::array();
   for (const TargetResidual& t : s.synthesis.targets)
     j["targets"].push_back({{"theta_deg", t.theta * kDegreesPerRadian},
@@ -134,14 +139,27 @@ json vessel_report_fields(const VesselSolveStage& r, const VesselConversionStage
                                {"prescribed", v.prescribed},
                                {"achieved", v.achieved},
                                {"violation", v.violation()}});
-  j["head"] = {{"depth_mm", s.depth},
-               {"junction_radius_mm", s.junction_radius},
-               {"junction_curvature_per_mm", s.junction_curvature},
-               {"junction_slope_deg", s.junction_slope * kDegreesPerRadian},
-               {"apex_slope_deg", s.apex_slope * kDegreesPerRadian}};
-  if (converted) {  // the same field names as the cam report
-    const PolarConversion& c = converted->conversion;
+  j["head"] = {
+      {"design", head_design_name(d.head_design)},
+      {"standard", s.exact ? standard_head_json(*d.preset, s.exact->shape) : json(nullptr)},
+      {"depth_mm", s.depth},
+      {"junction_radius_mm", s.junction_radius},
+      {"junction_curvature_per_mm", s.junction_curvature},
+      {"junction_slope_deg", s.junction_slope * kDegreesPerRadian},
+      {"apex_slope_deg", s.apex_slope * kDegreesPerRadian}};
+  if (converted && converted->conversion) {  // the same field names as the cam report
+    const PolarConversion& c = *converted->conversion;
     add_conversion_fields(j, c, c.curve.degree(), c.curve.size(), c.curve.knots().size());
+  } else if (converted) {  // an exact head: its own arcs, measured against the closed form
+    const NurbsCurve2d& c = converted->profile;
+    j["tolerance_mm"] = r.project.tolerance;
+    j["arcs"] = converted->arcs;
+    j["degree"] = c.degree();
+    j["control_points"] = c.size();
+    j["knot_count"] = c.knots().size();
+    j["max_radial_error_mm"] = converted->max_radial_error;
+  }
+  if (converted) {
     const VesselSurfaces& v = converted->surfaces;
     j["surfaces"] = {{"head", surface_json(v.head)},
                      {"cylinder", surface_json(v.cylinder)},

@@ -19,9 +19,9 @@ void BM_VesselJob(benchmark::State& state, const std::string& example) {
   double error = 0.0;
   for (auto _ : state) {
     const VesselJobResult r = run_vessel_job(project);
-    control_points = r.converted.conversion.curve.size();
-    arcs = static_cast<int>(r.converted.conversion.arcs.size());
-    error = r.converted.conversion.max_radial_error;
+    control_points = r.converted.conversion->curve.size();
+    arcs = static_cast<int>(r.converted.conversion->arcs.size());
+    error = r.converted.conversion->max_radial_error;
     benchmark::DoNotOptimize(r.converted.surfaces.head.size_v());
   }
   state.counters["control_points"] = control_points;

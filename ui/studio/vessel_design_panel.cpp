@@ -87,6 +87,16 @@ bool VesselDesignPanel::draw_preset(VesselDesign& d) {
       changed = true;
     }
   }
+  static constexpr std::array<std::string_view, 2> kDesigns = {"curvature", "exact"};
+  int design = d.head_design == HeadDesign::exact ? 1 : 0;
+  if (combo("design", design, kDesigns)) {
+    d.head_design = design == 1 ? HeadDesign::exact : HeadDesign::curvature;
+    changed = true;
+  }
+  help_marker(
+      "exact: the preset head itself, as rational quadratic arcs (degree 2). curvature: a head "
+      "synthesised from curvature targets under the end conditions.");
+  if (d.head_design == HeadDesign::exact) return changed;
   changed |= input_int("sampled targets", d.preset_targets, 1, 2000);
   help_marker(
       "Without curvature targets the synthesis fits this many samples of the preset's curvature; "

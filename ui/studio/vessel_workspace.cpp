@@ -151,32 +151,38 @@ void VesselWorkspace::draw_summary() {
   if (!results_) return;
   // The numbers of report.json, from the job's report builder.
   const nlohmann::ordered_json& f = results_->fields;
-  const SynthesisResult& s = results_->solved.solution.synthesis;
-  ImGui::Text("%d targets, %d unknowns, %d free parameters", static_cast<int>(s.targets.size()),
-              s.unknowns, s.free_parameters);
-  ImGui::Text("NLopt: %d evaluations, %s (%s s)", s.iterations, s.termination.c_str(),
-              number_text(solve_seconds_).c_str());
-  ImGui::Text("max |κ − κₖ| = %s 1/mm, objective %s",
-              field(f, "synthesis", "max_abs_residual_per_mm").c_str(),
-              field(f, "synthesis", "objective").c_str());
-  ImGui::Text("stationarity %s, max condition violation %s",
-              field(f, "synthesis", "stationarity").c_str(),
-              field(f, "synthesis", "max_violation").c_str());
-  ImGui::Text("depth %s mm, smallest R %s mm at %s°", field(f, "head", "depth_mm").c_str(),
-              field(f, "synthesis", "min_radius_mm").c_str(),
-              field(f, "synthesis", "min_radius_at_deg").c_str());
+  if (const auto& exact = results_->solved.solution.exact) {
+    ImGui::Text("%s, exact: rational quadratic arcs, no synthesis", exact->shape.name.c_str());
+    ImGui::Text("depth %s mm", field(f, "head", "depth_mm").c_str());
+  } else {
+    const SynthesisResult& s = results_->solved.solution.synthesis;
+    ImGui::Text("%d targets, %d unknowns, %d free parameters", static_cast<int>(s.targets.size()),
+                s.unknowns, s.free_parameters);
+    ImGui::Text("NLopt: %d evaluations, %s (%s s)", s.iterations, s.termination.c_str(),
+                number_text(solve_seconds_).c_str());
+    ImGui::Text("max |κ − κₖ| = %s 1/mm, objective %s",
+                field(f, "synthesis", "max_abs_residual_per_mm").c_str(),
+                field(f, "synthesis", "objective").c_str());
+    ImGui::Text("stationarity %s, max condition violation %s",
+                field(f, "synthesis", "stationarity").c_str(),
+                field(f, "synthesis", "max_violation").c_str());
+    ImGui::Text("depth %s mm, smallest R %s mm at %s°", field(f, "head", "depth_mm").c_str(),
+                field(f, "synthesis", "min_radius_mm").c_str(),
+                field(f, "synthesis", "min_radius_at_deg").c_str());
+  }
   ImGui::Text("junction: κ = %s 1/mm, slope %s°",
               field(f, "head", "junction_curvature_per_mm").c_str(),
               field(f, "head", "junction_slope_deg").c_str());
   ImGui::Text("max membrane stress %s MPa",
               number_text(f.at("stresses").at("max_stress_mpa").get<double>()).c_str());
   if (results_->converted) {
-    const PolarConversion& c = results_->converted->conversion;
-    ImGui::Text("NURBS: %zu arcs, degree %d, %d control points, max radial error %s µm %s %s µm",
-                c.arcs.size(), c.curve.degree(), c.curve.size(),
+    const VesselConversionStage& c = *results_->converted;
+    const double tolerance = results_->solved.project.tolerance;
+    ImGui::Text("NURBS: %d arcs, degree %d, %d control points, max radial error %s µm %s %s µm",
+                c.arcs, c.profile.degree(), c.profile.size(),
                 number_text(to_micrometres(c.max_radial_error)).c_str(),
-                c.max_radial_error <= c.tolerance ? "≤" : ">",
-                number_text(to_micrometres(c.tolerance)).c_str());
+                c.max_radial_error <= tolerance ? "≤" : ">",
+                number_text(to_micrometres(tolerance)).c_str());
   } else if (!results_->conversion_error.empty()) {
     ImGui::TextColored(ImVec4(0.8f, 0.1f, 0.1f, 1), "%s", results_->conversion_error.c_str());
   }

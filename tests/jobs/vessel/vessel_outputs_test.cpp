@@ -135,12 +135,12 @@ TEST(VesselOutputs, ReportJsonHasTheDocumentedFields) {
   EXPECT_NEAR(j["head"]["depth_mm"].get<double>(), 500.0, 1e-7);
   EXPECT_NEAR(j["head"]["junction_curvature_per_mm"].get<double>(), 1 / 500.0, 1e-12);
   EXPECT_EQ(j["tolerance_mm"], 1e-3);
-  EXPECT_EQ(j["max_radial_error_mm"], report_number(r.converted.conversion.max_radial_error));
+  EXPECT_EQ(j["max_radial_error_mm"], report_number(r.converted.conversion->max_radial_error));
   EXPECT_LE(j["max_radial_error_mm"].get<double>(), 1e-3);
   EXPECT_EQ(j["degree"], 9);
-  EXPECT_EQ(j["control_points"], r.converted.conversion.curve.size());
-  EXPECT_EQ(j["arcs"], r.converted.conversion.arcs.size());
-  EXPECT_EQ(j["arc_list"].size(), r.converted.conversion.arcs.size());
+  EXPECT_EQ(j["control_points"], r.converted.conversion->curve.size());
+  EXPECT_EQ(j["arcs"], r.converted.conversion->arcs.size());
+  EXPECT_EQ(j["arc_list"].size(), r.converted.conversion->arcs.size());
   EXPECT_TRUE(j["error_budget"]["function_exact"].get<bool>());
   EXPECT_EQ(j["surfaces"]["head"]["degree_u"], 2);  // a full turn of rational quadratic arcs
   EXPECT_EQ(j["surfaces"]["head"]["degree_v"], 9);

@@ -601,8 +601,8 @@ TEST_F(StudioTest, EveryExampleShowsAndExportsWhatTheCliWrites) {
   std::vector<Example> examples;
   for (const char* cam : {"roller", "flat_faced", "offset_roller", "polynomial", "cylindrical"})
     examples.push_back({"cam", kExamples / "cams" / (std::string(cam) + ".xml")});
-  for (const char* vessel :
-       {"hemispherical", "ellipsoidal_2_1", "torispherical_100_6", "custom_curvature"})
+  for (const char* vessel : {"hemispherical", "ellipsoidal_2_1", "torispherical_100_6",
+                             "custom_curvature", "torispherical_100_6_exact"})
     examples.push_back({"vessel", kExamples / "vessels" / (std::string(vessel) + ".xml")});
   for (const char* scan : {"sphere_like_fit.xml", "lobed_profile_fit.xml", "sphere_like.xyz",
                            "vase.xyz", "lobed_profile.xyz"})

@@ -1,0 +1,29 @@
+// The standard heads exactly: their meridians as rational quadratic NURBS — every circular or
+// elliptic arc of at most 90° is one rational quadratic segment (NURBS Book §7.5) — joined with the
+// heads' own tangent continuity at double knots, from junction A (θ = 0) over the apex to junction
+// B (θ = π) in the vessel's meridian plane (x radial, z axial; vessel_surfaces.h). Revolved, the
+// head is an exact (2, 2) surface. The closed forms they represent are head_shape's.
+#pragma once
+
+#include "designers/vessel/head_preset.h"
+#include "src/nurbs/nurbs_curve.h"
+
+namespace polarform {
+
+struct ExactHead {
+  HeadShape shape;              // the closed form: pieces, depth, curvature jumps
+  NurbsCurve2d meridian;        // degree 2, junction A → apex → junction B, (x, z)
+  int arcs = 0;                 // rational quadratic segments (2 per half for a torispherical head)
+  double apex_parameter = 0.0;  // the knot at the apex
+};
+
+// Hemispherical: two circular quarters; ellipsoidal: two elliptic quarters (semi-axes radius and
+// radius/ratio); torispherical: knuckle, crown to the apex, and mirrored. Throws InputError for
+// the parameters head_shape rejects.
+ExactHead exact_head(const HeadPreset& preset, double radius);
+
+// The largest |ρ − R(θ)| of the meridian against the closed form R(θ) of `shape`, at `samples`
+// equally spaced parameters of every segment (mm): the measured error of the exact head.
+double exact_head_deviation(const NurbsCurve2d& meridian, const HeadShape& shape, int samples);
+
+}  // namespace polarform
