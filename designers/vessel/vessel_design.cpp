@@ -108,6 +108,38 @@ VesselSolution solve_exact_head(const VesselDesign& design, const VesselLoad& lo
   return out;
 }
 
+// Bae 2002, §5.2: synthesis, then the analyses of the result (and of the preset, if any).
+VesselSolution solve_curvature_design(const VesselDesign& design, const VesselLoad& load) {
+  if (design.targets.empty() && !design.preset)
+    throw InputError("vessel: no curvature targets and no head preset to take them from");
+
+  SynthesisProblem problem;
+  problem.length_unit = design.radius;
+  problem.end_a = design.end_a.value_or(EndCondition::thesis_default(design.radius));
+  problem.end_b = design.end_b.value_or(EndCondition::thesis_default(design.radius));
+  problem.settings = design.synthesis;
+  problem.targets = design.targets;
+  if (problem.targets.empty())
+    problem.targets =
+        preset_targets(head_shape(*design.preset, design.radius), design.preset_targets);
+
+  VesselSolution out;
+  out.synthesis = synthesize_profile(problem);
+  const BSplineFunction& R = out.synthesis.profile;
+  out.profile = head_polar_function(R);
+  out.curvature = sample_curvature(out.profile, 360);
+  const Eigen::VectorXd at_a = R.derivatives(0.0, 2), at_apex = R.derivatives(kPi / 2, 1);
+  out.depth = at_apex(0);
+  out.junction_radius = at_a(0);
+  out.junction_curvature = polar_curvature(at_a(0), at_a(1), at_a(2));
+  out.junction_slope = std::atan2(at_a(1), at_a(0));
+  out.apex_slope = std::atan2(at_apex(1), at_apex(0));
+  out.stresses = membrane_stresses(out.profile, load);
+  if (design.preset) out.preset = compare_with_preset(*design.preset, design, out.profile, load);
+  out.warnings = warnings_for(out, design);
+  return out;
+}
+
 }  // namespace
 
 const char* head_design_name(HeadDesign design) {
@@ -140,40 +172,29 @@ std::vector<CurvatureSample> sample_curvature(const PolarFunction& f, int count)
   return out;
 }
 
-// Bae 2002, §5.2: synthesis, then the analyses of the result (and of the preset, if any).
+// The head (exact, or synthesised: Bae 2002, §5.2) with its analyses, then the code check and
+// the measures.
 VesselSolution solve_vessel(const VesselDesign& design) {
   check_positive(design.radius, "radius", "mm");
   check_positive(design.length, "length", "mm");
   check_positive(design.thickness, "thickness", "mm");
   check_positive(design.pressure, "pressure", "MPa");
   const VesselLoad load{design.radius, design.length, design.thickness, design.pressure};
-  if (design.head_design == HeadDesign::exact) return solve_exact_head(design, load);
-  if (design.targets.empty() && !design.preset)
-    throw InputError("vessel: no curvature targets and no head preset to take them from");
-
-  SynthesisProblem problem;
-  problem.length_unit = design.radius;
-  problem.end_a = design.end_a.value_or(EndCondition::thesis_default(design.radius));
-  problem.end_b = design.end_b.value_or(EndCondition::thesis_default(design.radius));
-  problem.settings = design.synthesis;
-  problem.targets = design.targets;
-  if (problem.targets.empty())
-    problem.targets = preset_targets(head_shape(*design.preset, design.radius), design.preset_targets);
-
-  VesselSolution out;
-  out.synthesis = synthesize_profile(problem);
-  const BSplineFunction& R = out.synthesis.profile;
-  out.profile = head_polar_function(R);
-  out.curvature = sample_curvature(out.profile, 360);
-  const Eigen::VectorXd at_a = R.derivatives(0.0, 2), at_apex = R.derivatives(kPi / 2, 1);
-  out.depth = at_apex(0);
-  out.junction_radius = at_a(0);
-  out.junction_curvature = polar_curvature(at_a(0), at_a(1), at_a(2));
-  out.junction_slope = std::atan2(at_a(1), at_a(0));
-  out.apex_slope = std::atan2(at_apex(1), at_apex(0));
-  out.stresses = membrane_stresses(out.profile, load);
-  if (design.preset) out.preset = compare_with_preset(*design.preset, design, out.profile, load);
-  out.warnings = warnings_for(out, design);
+  VesselSolution out = design.head_design == HeadDesign::exact
+                           ? solve_exact_head(design, load)
+                           : solve_curvature_design(design, load);
+  if (out.exact)
+    out.measures = vessel_measures(*design.preset, design.radius, design.length, design.thickness,
+                                   design.density);
+  if (design.code) {
+    out.code = check_vessel_code(*design.code, design.radius, design.thickness, design.pressure,
+                                 out.exact ? design.preset : std::nullopt);
+    for (const CodeCheck* c : {&out.code->shell, out.code->head ? &*out.code->head : nullptr})
+      if (c) out.warnings.insert(out.warnings.end(), c->warnings.begin(), c->warnings.end());
+    if (!out.code->thickness_sufficient)
+      out.warnings.push_back("the wall of " + short_text(design.thickness) +
+                             " mm is thinner than the code requires (report.json code)");
+  }
   return out;
 }
 

@@ -14,6 +14,7 @@
 #include "designers/vessel/exact_head.h"
 #include "designers/vessel/head_preset.h"
 #include "designers/vessel/membrane_stress.h"
+#include "designers/vessel/vessel_code_check.h"
 
 namespace polarform {
 
@@ -40,6 +41,8 @@ struct VesselDesign {
   // exact: the preset head itself (needs a preset and no targets; end conditions and synthesis
   // settings are not used).
   HeadDesign head_design = HeadDesign::curvature;
+  std::optional<CodeInputs> code;  // check the wall by ASME VIII-1 (vessel_code_check.h)
+  double density = 7850.0;         // kg/m³ of the wall material (steel), for the weight
 
   bool operator==(const VesselDesign&) const = default;
 };
@@ -74,7 +77,9 @@ struct VesselSolution {
   double apex_slope = 0.0;          // atan(R'(π/2)/R(π/2)), rad: non-zero is a cone point
   StressProfile stresses;           // of the designed head (the revolved A half) and cylinder
   std::optional<PresetComparison> preset;
-  std::vector<std::string> warnings;  // kinks, a radius mismatch, compressive hoop bands
+  std::optional<VesselCodeCheck> code;     // with the design's code inputs
+  std::optional<VesselMeasures> measures;  // an exact head: volumes, areas, weight
+  std::vector<std::string> warnings;       // kinks, a radius mismatch, compressive hoop bands, code
 };
 
 // Throws InputError for a bad design (radius, length, thickness, pressure <= 0, no targets and no

@@ -93,6 +93,16 @@ HeadPreset read_head(const XmlElementReader& r, double radius, int& targets, boo
   return h;
 }
 
+// <code allowable-stress="MPa" joint-efficiency="1" corrosion-allowance="mm"/>: ASME VIII-1.
+CodeInputs read_code(const XmlElementReader& r) {
+  CodeInputs c;
+  c.allowable_stress = r.positive("allowable-stress");
+  c.joint_efficiency = r.positive("joint-efficiency", 1.0);
+  if (c.joint_efficiency > 1.0) r.fail("joint-efficiency", "a joint efficiency in (0, 1]");
+  c.corrosion_allowance = r.positive("corrosion-allowance", 0.0, true);
+  return c;
+}
+
 SynthesisSettings read_synthesis(const XmlElementReader& r) {
   SynthesisSettings s;
   s.degree = r.integer("degree", s.degree);
@@ -114,6 +124,7 @@ SynthesisSettings read_synthesis(const XmlElementReader& r) {
 void to_millimetres(VesselProject& p, double unit) {
   VesselDesign& d = p.design;
   for (double* length : {&d.radius, &d.length, &d.thickness}) *length *= unit;
+  if (d.code) d.code->corrosion_allowance *= unit;
   for (CurvatureEntry& c : p.curvatures) c.value = c.is_radius ? c.value * unit : c.value / unit;
   for (std::optional<EndCondition>* end : {&d.end_a, &d.end_b})
     if (*end)
@@ -142,6 +153,7 @@ double read_vessel(const XMLElement* e, const XmlElementReader* root, Reader& re
     d.length = r.positive("length");
     d.thickness = r.positive("thickness");
     d.pressure = r.positive("pressure");
+    d.density = r.positive("density", d.density);
     const std::vector<const XMLElement*> curvatures = r.children("curvature");
     if (curvatures.size() > kMaxCurvatureTargets)
       throw InputError(r.where() + ": " + std::to_string(curvatures.size()) +
@@ -162,6 +174,12 @@ double read_vessel(const XMLElement* e, const XmlElementReader* root, Reader& re
         if (d.preset) throw InputError(hr.where() + ": expected one <head> per vessel");
         d.preset = read_head(hr, d.radius, d.preset_targets, curvature_inputs, !curvatures.empty(),
                              d.head_design);
+      });
+    const std::vector<const XMLElement*> codes = r.children("code");
+    for (const XMLElement* c : codes)
+      reader.visit(c, [&](const XmlElementReader& cr) {
+        if (c != codes.front()) throw InputError(cr.where() + ": expected one <code> per vessel");
+        d.code = read_code(cr);
       });
     const std::vector<const XMLElement*> settings = r.children("synthesis");
     for (const XMLElement* s : settings)
@@ -242,7 +260,15 @@ std::string vessel_project_xml(const VesselProject& p) {
   attribute(out, "length", d.length);
   attribute(out, "thickness", d.thickness);
   attribute(out, "pressure", d.pressure);
+  attribute(out, "density", d.density);
   out << ">\n";
+  if (d.code) {
+    out << "    <code";
+    attribute(out, "allowable-stress", d.code->allowable_stress);
+    attribute(out, "joint-efficiency", d.code->joint_efficiency);
+    attribute(out, "corrosion-allowance", d.code->corrosion_allowance);
+    out << "/>\n";
+  }
   for (const CurvatureEntry& c : p.curvatures) {
     out << "    <curvature";
     attribute(out, "theta", c.theta_deg);

@@ -38,7 +38,9 @@ VesselDesign to_design(const VesselProject& project);
 // Reads <polarform version="1"><vessel …>…</vessel><conversion tolerance="…"/></polarform>, or a
 // bare <vessel> root; units="mm|inch" on either states the unit of every length (converted to mm
 // as it is read, κ to 1/mm; the pressure stays in MPa):
-//   <vessel radius="mm" (or diameter="mm") length="mm" thickness="mm" pressure="MPa">
+//   <vessel radius="mm" (or diameter="mm") length="mm" thickness="mm" pressure="MPa"
+//           density="kg/m³">   (radius: inside; density 7850 by default)
+//     <code allowable-stress="MPa" joint-efficiency="1" corrosion-allowance="mm"/>
 //     <curvature theta="deg" kappa="1/mm" | radius="mm" weight="1"/>…
 //     <end at="A|B" r="mm" dr="mm/rad" ddr="mm/rad²"/>   (present attributes are imposed)
 //     <head preset="hemispherical|ellipsoidal|torispherical" ratio="2" crown="mm" knuckle="mm"

@@ -92,6 +92,24 @@ std::string html_report(const VesselJobResult& r, const VesselOutputOptions& o, 
       "min hoop stress",
       format_trimmed(stresses["head"]["min_hoop_stress_mpa"].get<double>(), 4) + " MPa");
   key.emplace_back("compressive hoop stress", s.stresses.compressive_hoop.empty() ? "none" : "YES");
+  if (s.code) {
+    const json& code = report["code"];
+    key.emplace_back("ASME VIII-1 MAWP", format_trimmed(s.code->mawp, 4) + " MPa");
+    key.emplace_back("required thickness, shell",
+                     format_trimmed(s.code->shell.required_thickness, 4) + " mm (" +
+                         s.code->shell.thickness_formula + ")");
+    key.emplace_back("required thickness, head",
+                     s.code->head ? format_trimmed(s.code->head->required_thickness, 4) + " mm (" +
+                                        s.code->head->thickness_formula + ")"
+                                  : code["head_note"].get<std::string>());
+    key.emplace_back("wall " + format_trimmed(r.solved.design.thickness, 4) + " mm",
+                     s.code->thickness_sufficient ? "sufficient" : "TOO THIN");
+  }
+  if (s.measures) {
+    key.emplace_back("vessel volume", format_trimmed(s.measures->vessel_volume * 1e-6, 6) + " L");
+    key.emplace_back("metal weight", format_trimmed(s.measures->weight, 5) + " kg at " +
+                                         format_trimmed(s.measures->density, 5) + " kg/m³");
+  }
   key.emplace_back("time", format_trimmed(r.seconds.total * 1e3, 1) + " ms");
   html.add_key_figures(key);
   if (!s.warnings.empty()) {

@@ -114,6 +114,33 @@ json synthesis_json(const VesselSolveStage& r) {
           {"min_radius_at_deg", s.min_radius_angle * kDegreesPerRadian}};
 }
 
+json code_check_json(const CodeCheck& c) {
+  return {{"required_thickness_mm", c.required_thickness},
+          {"thickness_formula", c.thickness_formula},
+          {"mawp_mpa", c.mawp},
+          {"mawp_formula", c.mawp_formula},
+          {"warnings", c.warnings}};
+}
+
+// ASME VIII-1 on the design's wall (vessel_code_check.h).
+json code_json(const VesselDesign& d, const VesselCodeCheck& c) {
+  return {{"standard", "ASME BPVC Section VIII Division 1, internal pressure, inside dimensions"},
+          {"allowable_stress_mpa", d.code->allowable_stress},
+          {"joint_efficiency", d.code->joint_efficiency},
+          {"corrosion_allowance_mm", d.code->corrosion_allowance},
+          {"shell", code_check_json(c.shell)},
+          {"head", c.head ? code_check_json(*c.head) : json(nullptr)},
+          {"head_note", c.head ? json(nullptr) : json(c.head_note)},
+          {"mawp_mpa", c.mawp},
+          {"thickness_sufficient", c.thickness_sufficient}};
+}
+
+json measures_json(const VesselMeasures& m) {
+  return {{"head_volume_mm3", m.head_volume},     {"head_area_mm2", m.head_area},
+          {"vessel_volume_mm3", m.vessel_volume}, {"metal_volume_mm3", m.metal_volume},
+          {"density_kg_per_m3", m.density},       {"weight_kg", m.weight}};
+}
+
 }  // namespace
 
 json vessel_report_fields(const VesselSolveStage& r, const VesselConversionStage* converted) {
@@ -166,6 +193,8 @@ json vessel_report_fields(const VesselSolveStage& r, const VesselConversionStage
                      {"far_head", surface_json(v.far_head)}};
   }
   j["stresses"] = stresses_json(s.stresses);
+  j["code"] = s.code ? code_json(d, *s.code) : json(nullptr);
+  j["measures"] = s.measures ? measures_json(*s.measures) : json(nullptr);
   j["preset"] = s.preset ? preset_json(r) : json(nullptr);
   j["warnings"] = s.warnings;
   return j;

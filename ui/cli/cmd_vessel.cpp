@@ -75,6 +75,17 @@ void run(const VesselArgs& a) {
     std::printf("YES, down to %.4g MPa\n", stresses["head"]["min_hoop_stress_mpa"].get<double>());
   else
     std::printf("none\n");
+  if (const auto& code = solution.code) {
+    std::printf("ASME VIII-1: MAWP %.4g MPa; required thickness shell %.4g mm (%s)", code->mawp,
+                code->shell.required_thickness, code->shell.thickness_formula.c_str());
+    if (code->head)
+      std::printf(", head %.4g mm (%s)", code->head->required_thickness,
+                  code->head->thickness_formula.c_str());
+    std::printf("; wall %s\n", code->thickness_sufficient ? "sufficient" : "TOO THIN");
+  }
+  if (const auto& m = solution.measures)
+    std::printf("volume %.6g L, metal weight %.5g kg (%.5g kg/m3)\n", m->vessel_volume * 1e-6,
+                m->weight, m->density);
   std::printf("wrote %zu files to %s (%.0f ms)\n", files.size(),
               std::filesystem::absolute(a.out).string().c_str(), r.seconds.total * 1e3);
 }

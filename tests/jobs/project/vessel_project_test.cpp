@@ -216,9 +216,10 @@ TEST(VesselProject, InchProjectsAreReadInMillimetres) {
   EXPECT_NE(error_of(vessel(kVessel + " diameter=\"1000\"", head))
                 .find("attribute 'diameter': expected either radius or diameter, not both"),
             std::string::npos);
-  EXPECT_NE(error_of(vessel(kVessel + " dia=\"1000\"", head))
-                .find("unknown attribute 'dia' on <vessel> (known here: diameter, length, "),
-            std::string::npos)
+  EXPECT_NE(
+      error_of(vessel(kVessel + " dia=\"1000\"", head))
+          .find("unknown attribute 'dia' on <vessel> (known here: density, diameter, length, "),
+      std::string::npos)
       << error_of(vessel(kVessel + " dia=\"1000\"", head));
 }
 

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <numbers>
 
 #include "jobs/vessel/vessel_outputs.h"
 #include "src/error.h"
@@ -107,6 +108,55 @@ TEST(ExactHeadJob, ProjectsSayWhichHeadTheyMean) {
   const VesselProject p = parse_vessel_project(
       vessel_xml("<head preset=\"ellipsoidal\" ratio=\"3\"/>", ""), "h.xml", warnings);
   EXPECT_EQ(parse_vessel_project(vessel_project_xml(p), "again.xml", warnings), p);
+}
+
+// <code> checks the wall by ASME VIII-1; an exact head also gets its volume and weight; the
+// project keeps both through a save.
+TEST(ExactHeadJob, CodeCheckAndMeasuresReachTheReport) {
+  const std::string xml = vessel_xml(
+      "<head preset=\"ellipsoidal\"/><code allowable-stress=\"138\" joint-efficiency=\"0.85\" "
+      "corrosion-allowance=\"1.5\"/>",
+      "");
+  const VesselJobResult r = run_text(xml);
+  const nlohmann::json j = vessel_report_json(r, {});
+  // Corroded: shell R + c, head D + 2c, each plus c; E = 0.85.
+  const double se = 138 * 0.85;
+  EXPECT_NEAR(j["code"]["shell"]["required_thickness_mm"].get<double>(),
+              1.5 + 2 * 501.5 / (se - 1.2), 1e-9);
+  EXPECT_NEAR(j["code"]["head"]["required_thickness_mm"].get<double>(),
+              1.5 + 2 * 1003 / (2 * se - 0.4), 1e-9);
+  EXPECT_NEAR(j["code"]["mawp_mpa"].get<double>(),
+              std::min(se * 8.5 / (501.5 + 0.6 * 8.5), 2 * se * 8.5 / (1003 + 0.2 * 8.5)), 1e-9);
+  // The shell needs 10.14 mm: the 10 mm wall is too thin (MAWP 1.97 < 2 MPa), and said so.
+  EXPECT_EQ(j["code"]["thickness_sufficient"], false);
+  EXPECT_LT(j["code"]["mawp_mpa"].get<double>(), 2.0);
+  bool warned = false;
+  for (const auto& w : j["warnings"])
+    warned =
+        warned || w.get<std::string>().find("thinner than the code requires") != std::string::npos;
+  EXPECT_TRUE(warned);
+  const double volume =
+      2 * (2.0 / 3 * std::numbers::pi * 500 * 500 * 250) + std::numbers::pi * 500 * 500 * 1500;
+  EXPECT_NEAR(j["measures"]["vessel_volume_mm3"].get<double>(), volume, 1e-9 * volume);
+  EXPECT_EQ(j["measures"]["density_kg_per_m3"], 7850.0);
+  std::vector<std::string> warnings;
+  const VesselProject p = parse_vessel_project(xml, "code.xml", warnings);
+  ASSERT_TRUE(p.design.code);
+  EXPECT_EQ(parse_vessel_project(vessel_project_xml(p), "again.xml", warnings), p);
+  // Without <code>, no check; a joint efficiency above 1 names the attribute.
+  EXPECT_TRUE(
+      vessel_report_json(run_text(vessel_xml("<head preset=\"ellipsoidal\"/>", "")), {})["code"]
+          .is_null());
+  try {
+    run_text(
+        vessel_xml("<head preset=\"ellipsoidal\"/><code allowable-stress=\"138\" "
+                   "joint-efficiency=\"1.2\"/>",
+                   ""));
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("attribute 'joint-efficiency'"), std::string::npos)
+        << e.what();
+  }
 }
 
 #if POLARFORM_HAVE_OCCT

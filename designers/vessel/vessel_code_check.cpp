@@ -1,0 +1,67 @@
+#include "designers/vessel/vessel_code_check.h"
+
+#include <algorithm>
+
+#include "designers/vessel/head_measures.h"
+
+namespace polarform {
+
+namespace {
+
+// The standard head as the code knows it, on inside dimensions.
+PressurePart code_part(const HeadPreset& h, double radius) {
+  switch (h.kind) {
+    case HeadKind::hemispherical:
+      return HemisphericalHead{radius};
+    case HeadKind::ellipsoidal:
+      return EllipsoidalHead{2 * radius, radius / h.ratio};
+    case HeadKind::torispherical:
+      return TorisphericalHead{2 * radius, h.crown, h.knuckle};
+  }
+  return HemisphericalHead{radius};
+}
+
+}  // namespace
+
+VesselCodeCheck check_vessel_code(const CodeInputs& code, double radius, double thickness,
+                                  double pressure, const std::optional<HeadPreset>& exact_head) {
+  InternalPressureDesign d;
+  d.allowable_stress = code.allowable_stress;
+  d.joint_efficiency = code.joint_efficiency;
+  d.pressure = pressure;
+  d.corrosion_allowance = code.corrosion_allowance;
+  d.nominal_thickness = thickness;
+  d.part = CylindricalShell{radius, std::nullopt};
+  VesselCodeCheck out;
+  out.shell = check_internal_pressure(d);
+  out.mawp = out.shell.mawp;
+  double required = out.shell.required_thickness;
+  if (exact_head) {
+    d.part = code_part(*exact_head, radius);
+    out.head = check_internal_pressure(d);
+    out.mawp = std::min(out.mawp, out.head->mawp);
+    required = std::max(required, out.head->required_thickness);
+  } else {
+    out.head_note =
+        "a curvature-designed head is not a code head: UG-32 and Appendix 1-4 do not apply";
+  }
+  out.thickness_sufficient = thickness >= required;
+  return out;
+}
+
+VesselMeasures vessel_measures(const HeadPreset& preset, double radius, double length,
+                               double thickness, double density) {
+  const HeadMeasures head = head_measures(preset, radius);
+  const HeadMeasures shell = cylinder_measures(radius, length);
+  VesselMeasures out;
+  out.head_volume = head.volume;
+  out.head_area = head.area;
+  out.vessel_volume = 2 * head.volume + shell.volume;
+  out.metal_volume = 2 * head_metal_volume(preset, radius, thickness) +
+                     cylinder_metal_volume(radius, length, thickness);
+  out.density = density;
+  out.weight = metal_weight(out.metal_volume, density);
+  return out;
+}
+
+}  // namespace polarform
