@@ -76,6 +76,26 @@ std::vector<std::string> warnings_for(const VesselSolution& s, const VesselDesig
   if (std::abs(s.apex_slope) > kSlopeTolerance)
     out.push_back("the revolved head has a cone point at the apex: the meridian meets the axis at " +
                   degrees(s.apex_slope) + " from the perpendicular (R'(90°) ≠ 0)");
+  // A synthesised head that rings: inflections, and hoop stresses above the preset it replaces.
+  if (!s.exact) {
+    const auto inflected = std::find_if(s.curvature.begin(), s.curvature.end(),
+                                        [](const CurvatureSample& c) { return c.kappa < 0.0; });
+    if (inflected != s.curvature.end())
+      out.push_back("the head has an inflection: κ < 0 from θ = " + degrees(inflected->theta) +
+                    " (the meridian turns outwards; raise the smoothing or fewer ordinates)");
+  }
+  if (s.preset) {
+    const auto max_hoop = [](const StressProfile& p) {
+      double m = -1e300;
+      for (const StressSample& k : p.samples)
+        if (!k.on_cylinder) m = std::max(m, k.hoop_stress);
+      return m;
+    };
+    const double design = max_hoop(s.stresses), preset = max_hoop(s.preset->stresses);
+    if (design > preset * (1 + 1e-9))
+      out.push_back("the head's largest hoop stress " + short_text(design) +
+                    " MPa exceeds the preset's " + short_text(preset) + " MPa");
+  }
   for (const CompressiveBand& band : s.stresses.compressive_hoop)
     out.push_back("compressive hoop stress down to " + short_text(band.min_hoop_stress) +
                   " MPa for θ from " + degrees(band.theta_from) + " to " + degrees(band.theta_to) +

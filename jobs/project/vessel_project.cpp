@@ -53,11 +53,21 @@ CurvatureEntry read_curvature(const XmlElementReader& r) {
   return c;
 }
 
-EndCondition read_end(const XmlElementReader& r) {
+// kappa="κ" states the end's curvature instead of R'' (with R' = 0): R'' = R − κR², from
+// κ = (R² + 2R'² − R R'')/(R² + R'²)^{3/2}; κ = 0 is curvature continuity with the cylinder.
+EndCondition read_end(const XmlElementReader& r, double radius) {
   EndCondition c;
   if (r.has("r")) c.r = r.positive("r");
   c.dr = r.optional_number("dr");
   c.ddr = r.optional_number("ddr");
+  if (r.has("kappa")) {
+    if (c.ddr) r.fail("kappa", "either kappa or ddr, not both");
+    if (c.dr && *c.dr != 0.0) r.fail("kappa", "kappa with dr=\"0\" or no dr (R' = 0 at the end)");
+    const double kappa = r.number("kappa");
+    const double R = c.r.value_or(radius);
+    c.dr = 0.0;
+    c.ddr = R - kappa * R * R;
+  }
   return c;
 }
 
@@ -144,14 +154,22 @@ double read_vessel(const XMLElement* e, const XmlElementReader* root, Reader& re
   reader.visit(e, [&](const XmlElementReader& r) {
     unit = read_length_unit(root ? *root : r, r);
     VesselDesign& d = p.design;
+    d.thickness = r.positive("thickness");
+    const int sizes = r.has("radius") + r.has("diameter") + r.has("outside-diameter");
+    if (sizes > 1)
+      r.fail(r.has("outside-diameter") ? "outside-diameter" : "diameter",
+             "one of radius, diameter (inside) and outside-diameter");
     if (r.has("diameter")) {  // what drawings give; saved as the radius
-      if (r.has("radius")) r.fail("diameter", "either radius or diameter, not both");
       d.radius = r.positive("diameter") / 2;
+    } else if (r.has("outside-diameter")) {  // the inside radius follows from the wall
+      d.radius = r.positive("outside-diameter") / 2 - d.thickness;
+      if (!(d.radius > 0.0))
+        r.fail("outside-diameter",
+               "an outside diameter above twice the thickness " + number(2 * d.thickness) + " mm");
     } else {
       d.radius = r.positive("radius");
     }
     d.length = r.positive("length");
-    d.thickness = r.positive("thickness");
     d.pressure = r.positive("pressure");
     d.density = r.positive("density", d.density);
     const std::vector<const XMLElement*> curvatures = r.children("curvature");
@@ -165,7 +183,7 @@ double read_vessel(const XMLElement* e, const XmlElementReader* root, Reader& re
       reader.visit(c, [&](const XmlElementReader& er) {
         std::optional<EndCondition>& end = er.choice("at", {"A", "B"}) == "A" ? d.end_a : d.end_b;
         if (end) er.fail("at", "each end at most once");
-        end = read_end(er);
+        end = read_end(er, d.radius);
       });
     const bool curvature_inputs =
         !curvatures.empty() || !r.children("end").empty() || !r.children("synthesis").empty();

@@ -27,7 +27,8 @@ std::string read(const fs::path& p) {
 }
 
 TEST(AtomicFile, ReplacesOnSuccessKeepsOldOnFailure) {
-  const fs::path dir = fs::temp_directory_path() / "polarform_atomic_test";
+  const fs::path dir =
+      fs::temp_directory_path() / ("polarform_atomic_test_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   const fs::path file = dir / "out.txt";

@@ -2,6 +2,7 @@
 #include "export/csv_writer.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <bit>
 #include <cfloat>
@@ -90,7 +91,8 @@ TEST(CsvWriter, OutputIsIndependentOfTheGlobalLocale) {
   const std::string probed = probe.str();
   const std::string localized = table(values);
   const std::filesystem::path file =
-      std::filesystem::temp_directory_path() / "polarform_csv_locale.csv";
+      std::filesystem::temp_directory_path() /
+      ("polarform_csv_locale_" + std::to_string(::getpid()) + ".csv");
   CsvWriter csv({"x [mm]"});
   csv.row({1234.5});
   csv.save(file);

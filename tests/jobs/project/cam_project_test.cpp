@@ -4,6 +4,7 @@
 #include "jobs/project/cam_project.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -289,7 +290,8 @@ TEST(CamProject, FuzzedFilesNeverEscapeAsAnythingButInputError) {
 }
 
 TEST(CamProject, SavingIsAtomic) {
-  const fs::path dir = fs::temp_directory_path() / "polarform_cam_project_test";
+  const fs::path dir =
+      fs::temp_directory_path() / ("polarform_cam_project_test_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   std::vector<std::string> warnings;

@@ -1,12 +1,14 @@
 // Fit project files: the example loads and names an existing scan; every field round-trips
 // exactly; a minimal file takes the defaults; each kind of bad value gives its own error naming
 // file, line and attribute; unknown fields warn.
+#include "jobs/project/fit_project.h"
+
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 
-#include "jobs/project/fit_project.h"
 #include "src/error.h"
 
 namespace polarform {
@@ -59,7 +61,8 @@ TEST(FitProject, EveryFieldRoundTripsExactly) {
   EXPECT_EQ(back, p);
   EXPECT_EQ(fit_project_xml(back), fit_project_xml(p));
 
-  const fs::path file = fs::temp_directory_path() / "polarform_fit_project_test.xml";
+  const fs::path file = fs::temp_directory_path() /
+                        ("polarform_fit_project_test_" + std::to_string(::getpid()) + ".xml");
   write_fit_project(p, file);
   std::vector<std::string> warnings;
   EXPECT_EQ(read_fit_project(file, warnings), p);

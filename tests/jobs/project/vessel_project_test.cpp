@@ -1,12 +1,14 @@
 // The vessel project file: the examples load without warnings, save → load is exact, every bad
 // value names file:line:attribute, unknown fields are warnings.
+#include "jobs/project/vessel_project.h"
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <numbers>
 
-#include "jobs/project/vessel_project.h"
 #include "src/error.h"
 
 namespace polarform {
@@ -82,7 +84,8 @@ TEST(VesselProject, SaveLoadRoundTripIsExact) {
   e.design.end_b.reset();
   EXPECT_EQ(parse_vessel_project(vessel_project_xml(e), "mem.xml", warnings), e);
 
-  const fs::path dir = fs::temp_directory_path() / "polarform_vessel_project_test";
+  const fs::path dir =
+      fs::temp_directory_path() / ("polarform_vessel_project_test_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   write_vessel_project(p, dir / "p.xml");
   EXPECT_EQ(read_vessel_project(dir / "p.xml", warnings), p);
@@ -214,7 +217,8 @@ TEST(VesselProject, InchProjectsAreReadInMillimetres) {
                        .design.radius,
                    500.0);
   EXPECT_NE(error_of(vessel(kVessel + " diameter=\"1000\"", head))
-                .find("attribute 'diameter': expected either radius or diameter, not both"),
+                .find("attribute 'diameter': expected one of radius, diameter (inside) and "
+                      "outside-diameter"),
             std::string::npos);
   EXPECT_NE(
       error_of(vessel(kVessel + " dia=\"1000\"", head))

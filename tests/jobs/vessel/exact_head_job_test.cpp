@@ -4,6 +4,7 @@
 // rule that decides between the exact head and a curvature design.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -155,6 +156,57 @@ TEST(ExactHeadJob, CodeCheckAndMeasuresReachTheReport) {
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("attribute 'joint-efficiency'"), std::string::npos)
+        << e.what();
+  }
+}
+
+// The torispherical example's synthesised head rings (issue 16): κ < 0 near 10.5° and a hoop
+// stress 2.3 times the preset's; both are warned about, an exact head is not.
+TEST(ExactHeadJob, RingingSynthesisIsWarnedAbout) {
+  std::vector<std::string> warnings;
+  const VesselJobResult r =
+      run_vessel_job(read_vessel_project(example("torispherical_100_6.xml"), warnings));
+  const std::vector<std::string>& w = r.solved.solution.warnings;
+  const auto has = [&](const std::string& text) {
+    return std::any_of(w.begin(), w.end(),
+                       [&](const std::string& x) { return x.find(text) != std::string::npos; });
+  };
+  EXPECT_TRUE(has("inflection: κ < 0 from θ = 10.5°"));
+  EXPECT_TRUE(has("exceeds the preset's 100 MPa"));
+  const VesselJobResult exact =
+      run_vessel_job(read_vessel_project(example("torispherical_100_6_exact.xml"), warnings));
+  for (const std::string& x : exact.solved.solution.warnings)
+    EXPECT_EQ(x.find("inflection"), std::string::npos) << x;
+}
+
+// An end's curvature instead of R'' (R'' = R − κR² at R' = 0), and the vessel by its outside
+// diameter (inside radius = OD/2 − t).
+TEST(ExactHeadJob, EndCurvatureAndOutsideDiameterAreRead) {
+  std::vector<std::string> warnings;
+  const auto read = [&](const std::string& xml) {
+    return parse_vessel_project(xml, "v.xml", warnings).design;
+  };
+  const VesselDesign d =
+      read(vessel_xml("<head preset=\"ellipsoidal\"/><end at=\"A\" kappa=\"0\"/>"
+                      "<end at=\"B\" r=\"400\" kappa=\"0.002\"/>"));
+  EXPECT_EQ(d.end_a->dr, 0.0);
+  EXPECT_EQ(d.end_a->ddr, 500.0);  // κ = 0: curvature-continuous with the cylinder
+  EXPECT_NEAR(*d.end_b->ddr, 400 - 0.002 * 400 * 400, 1e-12);
+  EXPECT_THROW(read(vessel_xml("<head preset=\"ellipsoidal\"/><end at=\"A\" kappa=\"0\" "
+                               "ddr=\"1\"/>")),
+               InputError);
+  const std::string od =
+      "<?xml version=\"1.0\"?><polarform version=\"1\"><vessel outside-diameter=\"1020\" "
+      "length=\"1500\" thickness=\"10\" pressure=\"2\"><head preset=\"hemispherical\"/>"
+      "</vessel></polarform>";
+  EXPECT_EQ(read(od).radius, 500.0);
+  try {
+    std::string both = od;
+    both.replace(both.find("length"), 0, "radius=\"500\" ");
+    read(both);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("attribute 'outside-diameter'"), std::string::npos)
         << e.what();
   }
 }

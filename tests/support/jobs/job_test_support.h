@@ -6,10 +6,10 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <string>
-
-#include <nlohmann/json.hpp>
 
 namespace polarform::test {
 
@@ -18,8 +18,12 @@ namespace fs = std::filesystem;
 // An empty directory named after the running test, under the system's temporary directory.
 inline fs::path scratch_dir() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path dir = fs::temp_directory_path() /
-                       ("polarform_" + std::string(info->test_suite_name()) + "_" + info->name());
+  // Named by the build too: two builds' test runs (two checkouts, CI beside a developer) may run
+  // the same test at the same time; one build's next run reuses (and first empties) its own.
+  const std::size_t build = std::hash<std::string>{}(POLARFORM_BINARY_DIR);
+  const fs::path dir =
+      fs::temp_directory_path() / ("polarform_" + std::string(info->test_suite_name()) + "_" +
+                                   info->name() + "_" + std::to_string(build % 1000000007));
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;

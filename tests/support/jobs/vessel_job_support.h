@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -36,7 +37,10 @@ inline VesselProject load_example(const std::string& name) {
 // An empty directory of its own for the running test.
 inline std::filesystem::path scratch_dir(const std::string& tag) {
   const auto* info = testing::UnitTest::GetInstance()->current_test_info();
-  const std::string name = "polarform_vessel_job_" + std::string(info->name()) + "_" + tag;
+  // Named by the build too, so that two builds' runs of the same test never share it.
+  const std::size_t build = std::hash<std::string>{}(POLARFORM_BINARY_DIR);
+  const std::string name = "polarform_vessel_job_" + std::string(info->name()) + "_" + tag + "_" +
+                           std::to_string(build % 1000000007);
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);

@@ -68,7 +68,8 @@ StudioRun run_studio(const std::string& arguments) {
       kStudio.string() + "' " + arguments + " 2>&1");
 }
 
-// "key=value" lines of one block of the output (after `header`, up to the next line without '=').
+// "key=value" lines of one block of the output (after `header`, up to the next other line); a key
+// has no spaces, so a message that happens to contain '=' is not one.
 std::map<std::string, std::string> numbers(const std::string& output,
                                            const std::string& header = "") {
   std::map<std::string, std::string> out;
@@ -81,7 +82,7 @@ std::map<std::string, std::string> numbers(const std::string& output,
       continue;
     }
     const auto eq = line.find('=');
-    if (eq == std::string::npos) {
+    if (eq == std::string::npos || line.find(' ') < eq) {
       if (!out.empty()) break;
       continue;
     }
