@@ -158,8 +158,12 @@ std::vector<double> CamProgram::smoothness_breaks() const {
   std::vector<double> out;
   for (const MotionSegment& seg : segments()) {
     if (seg.start() > 0) out.push_back(seg.start());
-    if (seg.spec().kind == SegmentKind::Dwell || !is_standard_law(seg.spec().law)) continue;
-    for (double x : law_joins(seg.spec().law)) out.push_back(seg.start() + x * (seg.end() - seg.start()));
+    const SegmentSpec& spec = seg.spec();
+    if (spec.kind == SegmentKind::Dwell) continue;
+    const std::vector<double> joins = spec.law == MotionLaw::Scca ? scca_joins(spec.scca)
+                                      : is_standard_law(spec.law) ? law_joins(spec.law)
+                                                                  : std::vector<double>{};
+    for (double x : joins) out.push_back(seg.start() + x * (seg.end() - seg.start()));
   }
   return out;
 }

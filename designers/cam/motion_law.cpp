@@ -17,14 +17,15 @@ struct LawName {
   MotionLaw law;
   std::string_view name;
 };
-constexpr std::array<LawName, 8> kLawNames = {{{MotionLaw::SimpleHarmonic, "harmonic"},
+constexpr std::array<LawName, 9> kLawNames = {{{MotionLaw::SimpleHarmonic, "harmonic"},
                                                {MotionLaw::Cycloidal, "cycloidal"},
                                                {MotionLaw::ModifiedTrapezoid, "modified-trapezoid"},
                                                {MotionLaw::ModifiedSine, "modified-sine"},
                                                {MotionLaw::Polynomial345, "3-4-5"},
                                                {MotionLaw::Polynomial4567, "4-5-6-7"},
                                                {MotionLaw::Polynomial, "polynomial"},
-                                               {MotionLaw::BSpline, "bspline"}}};
+                                               {MotionLaw::BSpline, "bspline"},
+                                               {MotionLaw::Scca, "scca"}}};
 
 // The polynomial laws in the power basis; Norton, Cam Design and Manufacturing Handbook, polynomial functions
 // (3-4-5: 10x^3 - 15x^4 + 6x^5; 4-5-6-7: 35x^4 - 84x^5 + 70x^6 - 20x^7).
@@ -130,7 +131,8 @@ MotionLaw parse_motion_law(std::string_view name) {
 }
 
 bool is_standard_law(MotionLaw law) {
-  return law != MotionLaw::Polynomial && law != MotionLaw::BSpline && motion_law_name(law) != "unknown";
+  return law != MotionLaw::Polynomial && law != MotionLaw::BSpline && law != MotionLaw::Scca &&
+         motion_law_name(law) != "unknown";
 }
 
 void standard_law(MotionLaw law, double x, int d, double* out) {

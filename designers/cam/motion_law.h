@@ -19,14 +19,15 @@ enum class MotionLaw {
   ModifiedSine,       // "modified-sine"
   Polynomial345,      // "3-4-5"
   Polynomial4567,     // "4-5-6-7"
-  Polynomial,         // "polynomial": Hermite polynomial of minimal degree for the endpoint constraints
-  BSpline,            // "bspline": smoothest B-spline meeting the endpoint constraints
+  Polynomial,  // "polynomial": Hermite polynomial of minimal degree for the endpoint constraints
+  BSpline,     // "bspline": smoothest B-spline meeting the endpoint constraints
+  Scca,        // "scca": sine–constant–cosine acceleration with parameters (scca_law.h)
 };
 
 std::string_view motion_law_name(MotionLaw law);
 // Throws InputError naming the unknown law and listing the valid names.
 MotionLaw parse_motion_law(std::string_view name);
-// The six normalised laws with fixed shape (everything but Polynomial and BSpline).
+// The six normalised laws with fixed shape (everything but Polynomial, BSpline and Scca).
 bool is_standard_law(MotionLaw law);
 
 // S(x), S'(x), ..., S^(d)(x) into out[0..d] for a standard law, d <= 4 (the fourth derivative

@@ -11,6 +11,7 @@
 
 #include "designers/cam/motion_law.h"
 #include "designers/cam/polynomial.h"
+#include "designers/cam/scca_law.h"
 #include "designers/cam/smoothest_bspline.h"
 #include "src/nurbs/bspline.h"
 
@@ -46,6 +47,7 @@ struct SegmentSpec {
   EndpointDerivatives at_start;
   EndpointDerivatives at_end;
   BSplineLawSettings bspline;  // B-spline law only
+  SccaParameters scca;         // SCCA law only
 
   bool operator==(const SegmentSpec&) const = default;
 };
@@ -73,6 +75,7 @@ class MotionSegment {
   struct StandardLaw {
     MotionLaw law;
     double signed_lift;
+    std::optional<SccaParameters> scca;  // the SCCA law's parameters
   };
   SegmentSpec spec_;
   double start_level_ = 0.0;

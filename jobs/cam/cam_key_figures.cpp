@@ -49,8 +49,13 @@ std::vector<KeyFigure> cam_design_inputs(const CamDesignStage& design) {
   for (const MotionSegment& s : design.program.segments()) {
     const SegmentSpec& spec = s.spec();
     std::string value = std::string(segment_kind_name(spec.kind));
-    if (spec.kind != SegmentKind::Dwell)
-      value += ", " + std::string(motion_law_name(spec.law)) + ", lift " + mm(spec.lift);
+    if (spec.kind != SegmentKind::Dwell) {
+      value += ", " + std::string(motion_law_name(spec.law));
+      if (spec.law == MotionLaw::Scca)
+        value += " (b " + number_text(spec.scca.b) + ", c " + number_text(spec.scca.c) + ", d " +
+                 number_text(spec.scca.d) + ")";
+      value += ", lift " + mm(spec.lift);
+    }
     value += ", θ " + degrees_text(spec.start) + " to " + degrees_text(spec.end);
     out.push_back({"segment '" + s.name() + "'", value});
   }

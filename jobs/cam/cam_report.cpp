@@ -32,7 +32,7 @@ void add_design_fields(json& j, const CamDesignStage& r) {
     j["cam"]["z0_mm"] = d.z0;
   }
   j["segments"] = json::array();
-  for (const MotionSegment& s : r.program.segments())
+  for (const MotionSegment& s : r.program.segments()) {
     j["segments"].push_back(
         {{"name", s.name()},
          {"kind", segment_kind_name(s.spec().kind)},
@@ -40,6 +40,10 @@ void add_design_fields(json& j, const CamDesignStage& r) {
          {"start_deg", s.start() * kDegreesPerRadian},
          {"end_deg", s.end() * kDegreesPerRadian},
          {"lift_mm", s.spec().lift}});
+    if (s.spec().kind != SegmentKind::Dwell && s.spec().law == MotionLaw::Scca)
+      j["segments"].back()["scca"] = {
+          {"b", s.spec().scca.b}, {"c", s.spec().scca.c}, {"d", s.spec().scca.d}};
+  }
   j["continuity"] = json::array();
   for (const ContinuityIssue& i : r.continuity)
     j["continuity"].push_back({{"angle_deg", i.angle * kDegreesPerRadian},

@@ -85,6 +85,14 @@ SegmentSpec read_segment(const XmlElementReader& r, double from, double level,
   if (!(s.lift > 0)) r.fail("lift", "a lift > 0 mm (the follower is already at the base circle)");
   if (s.law == MotionLaw::Polynomial || s.law == MotionLaw::BSpline)
     read_constraints(r, s, file, unknown);
+  if (s.law == MotionLaw::Scca) {  // the fractions b, c, d (scca_law.h)
+    s.scca.b = r.positive("b", s.scca.b, true);
+    s.scca.c = r.positive("c", s.scca.c, true);
+    s.scca.d = r.positive("d", s.scca.d, true);
+    if (std::abs(s.scca.b + s.scca.c + s.scca.d - 1) > 1e-9)
+      r.fail("d", "fractions with b + c + d = 1, got b + c + d = " +
+                      number(s.scca.b + s.scca.c + s.scca.d));
+  }
   if (s.law == MotionLaw::BSpline) {
     s.bspline.degree = r.integer("degree", s.bspline.degree);
     s.bspline.control_values = r.integer("control-values", s.bspline.control_values);
@@ -263,6 +271,11 @@ std::string cam_project_xml(const CamProject& p) {
     attr("from", number(degrees_for(s.start)));
     attr("to", number(degrees_for(s.end)));
     const bool constrained = s.law == MotionLaw::Polynomial || s.law == MotionLaw::BSpline;
+    if (s.kind != SegmentKind::Dwell && s.law == MotionLaw::Scca) {
+      attr("b", number(s.scca.b));
+      attr("c", number(s.scca.c));
+      attr("d", number(s.scca.d));
+    }
     if (s.kind != SegmentKind::Dwell && s.law == MotionLaw::BSpline) {
       attr("degree", std::to_string(s.bspline.degree));
       attr("control-values", std::to_string(s.bspline.control_values));

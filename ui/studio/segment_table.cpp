@@ -3,6 +3,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include <algorithm>
 #include <array>
 #include <string>
 #include <string_view>
@@ -17,10 +18,10 @@ namespace {
 
 constexpr double kDefaultLift = 10.0;  // mm, for a dwell turned into a rise or return
 
-constexpr std::array<MotionLaw, 8> kLaws = {MotionLaw::Cycloidal,     MotionLaw::SimpleHarmonic,
-                                            MotionLaw::ModifiedSine,  MotionLaw::ModifiedTrapezoid,
-                                            MotionLaw::Polynomial345, MotionLaw::Polynomial4567,
-                                            MotionLaw::Polynomial,    MotionLaw::BSpline};
+constexpr std::array<MotionLaw, 9> kLaws = {
+    MotionLaw::Cycloidal,         MotionLaw::SimpleHarmonic, MotionLaw::ModifiedSine,
+    MotionLaw::ModifiedTrapezoid, MotionLaw::Scca,           MotionLaw::Polynomial345,
+    MotionLaw::Polynomial4567,    MotionLaw::Polynomial,     MotionLaw::BSpline};
 constexpr std::array<SegmentKind, 3> kKinds = {SegmentKind::Dwell, SegmentKind::Rise,
                                                SegmentKind::Return};
 
@@ -183,6 +184,17 @@ bool SegmentTable::draw_details(SegmentSpec& s) {
   ImGui::SameLine();
   ImGui::SetNextItemWidth(-FLT_MIN);
   changed |= ImGui::InputTextWithHint("##name", "name (optional)", &s.name);
+  if (s.kind != SegmentKind::Dwell && s.law == MotionLaw::Scca) {
+    // b and c are edited; d = 1 − b − c keeps the fractions a partition of the segment.
+    changed |= drag_number("b (sine ramps)", s.scca.b, 0.005, 0.0, 1.0 - s.scca.c, "%.3f");
+    changed |= drag_number("c (constant)", s.scca.c, 0.005, 0.0, 1.0 - s.scca.b, "%.3f");
+    s.scca.d = std::max(0.0, 1.0 - s.scca.b - s.scca.c);
+    ImGui::Text("d (cosine turn) = %.3f", s.scca.d);
+    help_marker(
+        "SCCA (Norton): b = 0.25, c = 0.5 is the modified trapezoid; b = 0.25, c = 0 the "
+        "modified sine; b = 0.5, c = 0 the cycloidal; b = c = 0 the harmonic law.");
+    return changed;
+  }
   if (s.kind == SegmentKind::Dwell ||
       (s.law != MotionLaw::Polynomial && s.law != MotionLaw::BSpline)) {
     ImGui::TextDisabled("Endpoint constraints apply to polynomial and B-spline laws.");

@@ -21,6 +21,7 @@ namespace {
 
 namespace fs = std::filesystem;
 const fs::path kExamples = fs::path(POLARFORM_SOURCE_DIR) / "examples" / "cams";
+constexpr double kPi = std::numbers::pi;
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p);
@@ -62,6 +63,33 @@ TEST(CamProject, ExamplesLoadWithoutWarningsAndRoundTripExactly) {
     ++count;
   }
   EXPECT_EQ(count, 5);
+}
+
+// law="scca" with its fractions b, c, d (b + c + d = 1), kept through a save; the program's
+// displacement is the SCCA law's.
+TEST(CamProject, SccaLawsAreReadWithTheirFractions) {
+  std::vector<std::string> warnings;
+  const CamProject p = parse_cam_project(
+      cam(kPlate,
+          "<segment kind=\"rise\" law=\"scca\" b=\"0.2\" c=\"0.6\" d=\"0.2\" lift=\"20\" "
+          "to=\"180\"/>\n<segment kind=\"return\" law=\"scca\" to=\"360\"/>\n"),
+      "cam.xml", warnings);
+  const SegmentSpec& rise = p.cam.segments[0];
+  EXPECT_EQ(rise.law, MotionLaw::Scca);
+  EXPECT_EQ(rise.scca, (SccaParameters{0.2, 0.6, 0.2}));
+  EXPECT_EQ(p.cam.segments[1].scca, SccaParameters{});  // the modified trapezoid's by default
+  EXPECT_TRUE(parse_cam_project(cam_project_xml(p), "saved.xml", warnings) == p);
+  const MotionSegment segment(rise, 0.0);
+  double s[3], law[3];
+  segment.derivatives(kPi / 4, 2, s);
+  scca_law({0.2, 0.6, 0.2}, 0.25, 2, law);
+  EXPECT_NEAR(s[0], 20 * law[0], 1e-12);
+  EXPECT_NEAR(s[2], 20 * law[2] / (kPi * kPi), 1e-12);
+  EXPECT_NE(error_of(cam(kPlate,
+                         "<segment kind=\"rise\" law=\"scca\" b=\"0.5\" c=\"0.5\" d=\"0.5\" "
+                         "lift=\"20\" to=\"180\"/>\n<segment kind=\"return\" to=\"360\"/>\n"))
+                .find("attribute 'd': expected fractions with b + c + d = 1"),
+            std::string::npos);
 }
 
 TEST(CamProject, PressureAngleLimitIsReadInDegreesAndSaved) {
@@ -182,7 +210,7 @@ TEST(CamProject, BrokenFilesGiveSpecificErrors) {
       {cam(kPlate, "<segment kind=\"rise\" law=\"parabolic\" lift=\"20\" to=\"180\"/>\n"),
        "cam.xml:3: <segment> attribute 'law': expected a motion law (unknown motion law "
        "'parabolic'; expected one of: harmonic, cycloidal, modified-trapezoid, modified-sine, "
-       "3-4-5, 4-5-6-7, polynomial, bspline), got 'parabolic'"},
+       "3-4-5, 4-5-6-7, polynomial, bspline, scca), got 'parabolic'"},
       {cam(kPlate,
            "<segment kind=\"rise\" law=\"cycloidal\" lift=\"20\" to=\"180\"/>\n"
            "<segment kind=\"return\" law=\"cycloidal\" to=\"300\"/>\n"),
