@@ -9,6 +9,7 @@
 #include "src/fit/circle_fit.h"
 #include "src/fit/fit_pipeline.h"
 #include "src/fit/orthogonal_coordinates.h"
+#include "src/fit/profile_loops.h"
 #include "src/nurbs/symbolic_product.h"
 #include "src/units.h"
 
@@ -55,6 +56,8 @@ PolarCurveFit fit_polar_curve(const Eigen::Matrix2Xd& points, const PolarFitOpti
   if (opt.check_single_valued) {
     check = check_single_valued(pc.theta, Eigen::VectorXd(), pc.r, threads);
     if (!check.single_valued) {
+      const std::string loops = describe_loops(profile_contours(local), centre);
+      if (!loops.empty()) throw InputError("polar curve fit: " + loops);
       std::ostringstream msg;
       msg.precision(6);
       msg << "polar curve fit: the data is not single-valued about the centre (" << centre.x()

@@ -3,7 +3,7 @@
 // range → parameter synchronization (2.7)-(2.8) → a single-valued B-spline r = F(u) of degree p →
 // C(u) = F(u)·B(u) by the symbolic product (2.10). Full-circle data gives a closed fit (periodic F,
 // §3.3.1, clipped). Data that rays from the centre cross more than once is refused, naming the
-// angle ranges, instead of being fitted.
+// loops or the angle ranges, instead of being fitted.
 #pragma once
 
 #include <Eigen/Core>
@@ -45,8 +45,9 @@ struct PolarCurveFit {
   FitReport report;
 };
 
-// Throws InputError for bad input or data that is not single-valued about the centre (the message
-// lists the angle ranges in degrees), NumericalError when the fit cannot reach its tolerance.
+// Throws InputError for bad input or data that is not single-valued about the centre: two or more
+// loops (a bore, a hole) are named with their radii, else the message lists the angle ranges in
+// degrees; NumericalError when the fit cannot reach its tolerance.
 PolarCurveFit fit_polar_curve(const Eigen::Matrix2Xd& points, const PolarFitOptions& options = {});
 
 // A planar slice of a 3D cloud: the points within thickness/2 of the plane through `origin` with

@@ -200,6 +200,52 @@ TEST(PolarCurveFit, ConcentricBranchesEverywhereAreAFold) {
   EXPECT_NEAR(one.noise, sigma, 0.3 * sigma);
 }
 
+// A cam-like contour with a bore is two loops, named with their radii (not dozens of angle ranges).
+TEST(PolarCurveFit, AContourWithABoreIsTwoLoops) {
+  const Eigen::Matrix2Xd outer = polar_points([](double t) { return 40 + 0.5 * std::cos(3 * t); },
+                                              3600, 0.0, 2 * kPi, {5, 7}, 0.005, 31);
+  const Eigen::Matrix2Xd bore =
+      polar_points([](double) { return 12.0; }, 400, 0.0, 2 * kPi, {5, 7}, 0.005, 32);
+  Eigen::Matrix2Xd all(2, outer.cols() + bore.cols());
+  all << outer, bore;
+  PolarFitOptions o;
+  o.centre = Eigen::Vector2d(5, 7);
+  try {
+    fit_polar_curve(all, o);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "polar curve fit: two loops found (radii about 40 mm and 12 mm around the centre): "
+              "use scan-cam, or remove the inner loop");
+  }
+}
+
+// Fold regions beyond the third are counted, not listed: ten short second branches.
+TEST(PolarCurveFit, ListsAtMostThreeFolds) {
+  Eigen::Matrix2Xd all =
+      polar_points([](double) { return 10.0; }, 6000, 0.0, 2 * kPi, {0, 0}, 0.0, 33);
+  for (int b = 0; b < 10; ++b) {
+    const Eigen::Matrix2Xd branch = polar_points([](double) { return 13.0; }, 100, 0.5 * b + 0.1,
+                                                 0.5 * b + 0.3, {0, 0}, 0.0, 40 + b);
+    all.conservativeResize(2, all.cols() + branch.cols());
+    all.rightCols(branch.cols()) = branch;
+  }
+  PolarFitOptions o;
+  o.centre = Eigen::Vector2d::Zero();
+  try {
+    fit_polar_curve(all, o);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    std::size_t listed = 0;
+    for (std::size_t at = m.find("theta (deg) in ["); at != std::string::npos;
+         at = m.find("theta (deg) in [", at + 1))
+      ++listed;
+    EXPECT_EQ(listed, 3u) << m;
+    EXPECT_NE(m.find(" … and 7 more; noise "), std::string::npos) << m;
+  }
+}
+
 TEST(PolarCurveFit, SliceOfACylinderIsACircleInSpace) {
   Eigen::Matrix3Xd p = test::cylindrical_cloud([](double, double) { return 6.0; }, 20000, -5, 5, 0, 2 * kPi, 8);
   const test::Rigid m = test::random_rigid(9);

@@ -1,5 +1,6 @@
 // The polarform binary on the fit-family commands: exit code 0 and the outputs on the bundled
-// examples, exit code 2 with one error line naming the line on a broken scan, and no files then.
+// examples, exit code 2 with one error line naming the line on a broken scan, and no files then;
+// a profile with its bore named as two loops.
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -201,6 +202,19 @@ TEST(Cli, BrokenScanExitsTwoNamingTheLineAndWritesNothing) {
                 dir);
   EXPECT_EQ(grid.code, 2);
   EXPECT_NE(grid.err.find("g.csv:2:"), std::string::npos) << grid.err;
+}
+
+// The bundled cam scan with its bore is two loops: one line on stderr says so, with the radii.
+TEST(Cli, FitNamesTheTwoLoopsOfAProfileWithItsBore) {
+  const auto dir = scratch_dir();
+  const std::string scan = example("scans/cam_profile.xyz");
+  const Outcome r = polarform("fit " + scan + " --out " + (dir / "cam").string(), dir);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(r.err, "polarform: error: " + scan +
+                       ": polar curve fit: two loops found (radius about 50 mm around the centre, "
+                       "radius about 8 mm around (12.5, -7.25)): use scan-cam, or remove the "
+                       "inner loop\n");
+  EXPECT_FALSE(std::filesystem::exists(dir / "cam"));
 }
 
 TEST(Cli, BadOptionsExitTwo) {
