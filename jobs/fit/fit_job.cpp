@@ -37,9 +37,14 @@ std::string plane_text(const CloudPlane& p) {
   return s.str();
 }
 
+OutlierPolicy outlier_policy(const FitJobOptions& o) {
+  return o.reject_outliers ? OutlierPolicy::reject : OutlierPolicy::refuse;
+}
+
 RotationalFitOptions rotational_options(const FitJobOptions& o) {
   if (o.ctrl) check_control_net_size(o.ctrl->first, o.ctrl->second, "--ctrl");
   RotationalFitOptions ro;
+  ro.spherical.outliers = ro.cylindrical.outliers = outlier_policy(o);
   ro.spherical.function = ro.cylindrical.function = function_options(o);
   ro.spherical.frame.origin = ro.cylindrical.frame.origin = o.center;
   ro.spherical.frame.axis = ro.cylindrical.frame.axis = o.axis;
@@ -80,6 +85,7 @@ ProfileFit fit_profile(const FitInput& in, const CloudPlane& plane, const FitJob
   po.function = function_options(o);
   po.closure = o.closure;
   po.base_kind = o.base;
+  po.outliers = outlier_policy(o);
   if (o.center) po.centre = plane.frame.to_local(*o.center).head<2>();
   const Eigen::Matrix2Xd local = plane.frame.to_local(in.points).topRows(2);
   PolarCurveFit polar = fit_polar_curve(local, po);
@@ -111,6 +117,7 @@ FitJobOptions fit_job_options(const FitProject& p) {
   o.center = p.center;
   o.axis = p.axis;
   o.skip_bad = p.skip_bad;
+  o.reject_outliers = p.reject_outliers;
   o.fairness = p.fairness;
   o.fairness_weight = p.fairness_weight;
   o.base = p.base;
@@ -168,17 +175,12 @@ FitJobResult fit_cloud(FitInput in, const FitJobOptions& o) {
   FitReport& rep = report_of(fit);
   rep.times.read = in.read_seconds;
   rep.times.total += in.read_seconds;
-  return {std::move(in.file),
-          std::move(in.points),
-          in.dropped,
-          std::move(method),
-          std::move(reason),
-          std::move(plane),
-          std::move(fit),
-          o.fairness,
-          o.fairness_weight,
-          o.base,
-          in.read_seconds + clock.lap()};
+  return {std::move(in.file), std::move(in.points),
+          in.dropped,         std::move(method),
+          std::move(reason),  std::move(plane),
+          std::move(fit),     o.fairness,
+          o.fairness_weight,  o.base,
+          o.reject_outliers,  in.read_seconds + clock.lap()};
 }
 
 FitJobResult run_fit_job(const std::filesystem::path& scan, const FitJobOptions& o) {

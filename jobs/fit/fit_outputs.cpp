@@ -112,6 +112,7 @@ std::string html_report(const FitJobResult& r, const json& report, const std::st
                         {"max distance", um(rep.error.max)}});
   html.add_heading("Method");
   html.add_paragraph(r.reason);
+  if (r.reject_outliers) html.add_paragraph(outlier_summary(r));
   html.add_paragraph("Frame: " + report["frame"]["reason"].get<std::string>());
   if (report.contains("quadric") && !report["quadric"].is_null())
     html.add_paragraph("Best-fit quadric: " + report["quadric"]["type"].get<std::string>() +
@@ -139,6 +140,17 @@ std::string html_report(const FitJobResult& r, const json& report, const std::st
 }  // namespace
 
 double deviation_color_limit(const FitJobResult& r) { return std::max(r.report().error.p99, 1e-9); }
+
+std::string outlier_summary(const FitJobResult& r) {
+  const FitReport& rep = r.report();
+  const OutlierReport& o = rep.outliers;
+  std::string text = "Outliers: " + std::to_string(o.count) + " of " +
+                     std::to_string(r.points.cols()) + " points rejected at > " +
+                     number_text(kOutlierSigmas) + " σ (σ = " + number_text(o.scale) +
+                     " mm, threshold " + number_text(o.threshold) + " mm";
+  if (o.count > 0) text += "; largest " + number_text(o.largest) + " mm";
+  return text + "); the distances are of the " + std::to_string(rep.error.count) + " points kept.";
+}
 
 json fit_report_fields(const FitJobResult& r) {
   const FitReport& rep = r.report();
@@ -197,6 +209,14 @@ json fit_report_fields(const FitJobResult& r) {
   j["error_kind"] = "true closest-point distance from each input point to the fitted geometry";
   j["radial_error_mm"] = stats(rep.radial);
   j["deviation_color_limit_mm"] = deviation_color_limit(r);
+  if (r.reject_outliers) {
+    const OutlierReport& o = rep.outliers;
+    j["outliers"] = {{"rejected", o.count},
+                     {"threshold_sigma", kOutlierSigmas},
+                     {"sigma_mm", o.scale},
+                     {"threshold_mm", o.threshold},
+                     {"largest_mm", o.largest}};
+  }
   return j;
 }
 

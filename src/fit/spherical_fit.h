@@ -17,6 +17,7 @@
 #include "src/fit/function_fit.h"
 #include "src/fit/local_frame.h"
 #include "src/fit/orthogonal_coordinates.h"
+#include "src/fit/outliers.h"
 #include "src/fit/pole_cap.h"
 #include "src/fit/single_valued_check.h"
 #include "src/io/point_cloud.h"
@@ -44,6 +45,7 @@ struct SphericalFitOptions {
   PoleTreatment south = PoleTreatment::automatic;  // at φ = π
   double pole_reach = std::numbers::pi / 18;       // 10°: see PoleTreatment::automatic
   bool check_single_valued = true;
+  OutlierPolicy outliers = OutlierPolicy::refuse;
 };
 
 struct SphericalFit {
@@ -60,8 +62,9 @@ struct SphericalFit {
   FitReport report;
 };
 
-// Throws InputError for bad input, a frame that cannot be estimated, a cap without a closed fit, or data that is not single-valued about the origin (naming the φ, θ ranges);
-// NumericalError when the tolerance cannot be met.
+// Throws InputError for bad input, a frame that cannot be estimated, a cap without a closed fit,
+// a few outliers (under refuse, with their count), or data that is not single-valued about the
+// origin (naming the φ, θ ranges); NumericalError when the tolerance cannot be met.
 SphericalFit fit_spherical(const Eigen::Matrix3Xd& points, const SphericalFitOptions& options = {});
 SphericalFit fit_spherical(const std::filesystem::path& file, const SphericalFitOptions& options = {},
                            const ReadOptions& read = {});

@@ -3,17 +3,18 @@
 // error at the noise level and a surface far closer to the truth than the noise; closed fits are
 // seamless; G1 poles and caps collapse to one point with one tangent plane; a rigidly moved cloud
 // gives the rigidly moved surface; rays that cross the data twice are refused.
-#include <gtest/gtest.h>
+#include "src/fit/spherical_fit.h"
 
-#include <random>
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <string>
+#include <vector>
 
 #include "src/error.h"
 #include "src/fit/membership.h"
-#include "src/fit/spherical_fit.h"
 #include "src/nurbs/point_inversion.h"
 #include "tests/src/fit/fit_test_support.h"
 
@@ -222,6 +223,39 @@ TEST(SphericalFit, PoleCapsCloseTheHolesWithTheirOwnTangentPlanes) {
   }
   EXPECT_GT(f.north_cap->point.z(), 25.0);
   EXPECT_LT(f.south_cap->point.z(), -25.0);
+}
+
+// Five gross outliers (±3 mm along their rays) of a noisy lobed body: refused with their count,
+// or left out, when the fit is that of the other points.
+TEST(SphericalFit, GrossOutliersAreRefusedOrLeftOut) {
+  Eigen::Matrix3Xd p = test::spherical_cloud(lobed, 20005, 0, kPi, 0, 2 * kPi, 7);
+  test::add_noise(p, 0.02, 8);
+  for (Eigen::Index k = 20000; k < 20005; ++k)
+    p.col(k) *= 1 + (k % 2 ? 3.0 : -3.0) / p.col(k).norm();
+  SphericalFitOptions o;
+  o.frame.origin = Eigen::Vector3d::Zero();
+  o.frame.axis = Eigen::Vector3d::UnitZ();
+  o.frame.reference = Eigen::Vector3d::UnitX();  // else i follows the cloud's principal direction
+  o.function.size_u = o.function.size_v = 16;
+  try {
+    fit_spherical(p, o);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_EQ(m.rfind("spherical fit: 5 outliers of 20005 points at > 8 σ (σ = 0.0", 0), 0u) << m;
+    EXPECT_NEAR(test::number_after(m, "; largest "), 3.0, 0.1) << m;
+    EXPECT_NE(m.find(" deg, theta "), std::string::npos) << m;
+  }
+  o.outliers = OutlierPolicy::reject;
+  const SphericalFit f = fit_spherical(p, o);
+  EXPECT_EQ(f.report.outliers.points,
+            (std::vector<Eigen::Index>{20000, 20001, 20002, 20003, 20004}));
+  EXPECT_EQ(f.report.error.count, 20000u);
+  EXPECT_NEAR(f.report.error.rms, 0.02, 0.005);  // σ, and the 16 x 16 net's shortfall
+  o.outliers = OutlierPolicy::refuse;
+  const SphericalFit rest = fit_spherical(Eigen::Matrix3Xd(p.leftCols(20000)), o);
+  EXPECT_LT((rest.F.coefs() - f.F.coefs()).cwiseAbs().maxCoeff(), 1e-9);
+  EXPECT_EQ(f.report.error.rms, rest.report.error.rms);
 }
 
 TEST(SphericalFit, RigidlyMovedCloudGivesTheRigidlyMovedSurface) {
