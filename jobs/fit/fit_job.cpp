@@ -5,6 +5,7 @@
 
 #include "src/error.h"
 #include "src/io/point_cloud.h"
+#include "src/number_text.h"
 
 namespace polarform {
 
@@ -93,6 +94,26 @@ ProfileFit fit_profile(const FitInput& in, const CloudPlane& plane, const FitJob
   return {std::move(polar), std::move(curve)};
 }
 
+// A closed pole that creases or rests on no data (SphericalFit::north_check, south_check).
+void add_pole_warnings(const SphericalFit& f, double reach, std::vector<std::string>& warnings) {
+  const std::pair<const char*, const PoleCheck*> poles[] = {{"north", &f.north_check},
+                                                            {"south", &f.south_check}};
+  for (const auto& [name, check] : poles) {
+    const std::optional<PoleReport>& measured = name[0] == 'n' ? f.north_pole : f.south_pole;
+    if (check->creased)
+      warnings.push_back("spherical fit: the " + std::string(name) +
+                         " pole creases: its normals spread by " +
+                         degrees_text(measured->normal_spread) + " about their mean (more than " +
+                         degrees_text(kMaxPoleNormalSpread) +
+                         "), so it has no tangent plane; --pole g1 gives it one");
+    if (check->extrapolated)
+      warnings.push_back("spherical fit: the " + std::string(name) +
+                         " pole is extrapolated: no data within " + degrees_text(reach) +
+                         " of it (the nearest point is " + degrees_text(check->nearest_data) +
+                         " away)");
+  }
+}
+
 FitReport& report_of(std::variant<ProfileFit, RotationalFit>& fit) {
   if (auto* p = std::get_if<ProfileFit>(&fit)) return p->polar.report;
   return std::get<RotationalFit>(fit).report();
@@ -172,15 +193,26 @@ FitJobResult fit_cloud(FitInput in, const FitJobOptions& o) {
     method = to_string(s.method());
     reason = s.reason;
   }
+  std::vector<std::string> warnings;
+  if (const auto* r = std::get_if<RotationalFit>(&fit))
+    if (const auto* sphere = std::get_if<SphericalFit>(&r->fit))
+      add_pole_warnings(*sphere, rotational.spherical.pole_reach, warnings);
   FitReport& rep = report_of(fit);
   rep.times.read = in.read_seconds;
   rep.times.total += in.read_seconds;
-  return {std::move(in.file), std::move(in.points),
-          in.dropped,         std::move(method),
-          std::move(reason),  std::move(plane),
-          std::move(fit),     o.fairness,
-          o.fairness_weight,  o.base,
-          o.reject_outliers,  in.read_seconds + clock.lap()};
+  return {std::move(in.file),
+          std::move(in.points),
+          in.dropped,
+          std::move(method),
+          std::move(reason),
+          std::move(plane),
+          std::move(fit),
+          o.fairness,
+          o.fairness_weight,
+          o.base,
+          o.reject_outliers,
+          std::move(warnings),
+          in.read_seconds + clock.lap()};
 }
 
 FitJobResult run_fit_job(const std::filesystem::path& scan, const FitJobOptions& o) {

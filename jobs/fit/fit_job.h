@@ -12,6 +12,7 @@
 #include <string>
 #include <utility>
 #include <variant>
+#include <vector>
 
 #include "designers/scan/cloud_plane.h"
 #include "jobs/project/fit_project.h"
@@ -78,7 +79,8 @@ struct FitJobResult {
   FairnessOptions::Mode fairness = FairnessOptions::Mode::relative;  // as asked
   double fairness_weight = 1e-7;
   ArcKind base = ArcKind::rqb;
-  bool reject_outliers = false;  // as asked; what was left out: report().outliers
+  bool reject_outliers = false;       // as asked; what was left out: report().outliers
+  std::vector<std::string> warnings;  // about the fit: a pole that creases or is extrapolated
   double seconds = 0.0;  // read + fit
 
   bool profile() const { return std::holds_alternative<ProfileFit>(fit); }

@@ -58,13 +58,16 @@ json quadric_json(const QuadricFit& q) {
               {"rms_sampson_distance_mm", q.rms_distance}};
 }
 
-json pole_json(PoleTreatment t, const std::optional<PoleReport>& p,
+json pole_json(PoleTreatment t, const PoleCheck& check, const std::optional<PoleReport>& p,
                const std::optional<PoleCap>& cap) {
-  json j{{"treatment", pole_word(t)}};
+  json j{{"treatment", pole_word(t)},
+         {"nearest_data_deg", check.nearest_data * kDegreesPerRadian},
+         {"extrapolated", check.extrapolated}};
   if (p)
     j["measured"] = {{"point", vec(p->point)},
                      {"gap_mm", p->gap},
-                     {"normal_spread_deg", p->normal_spread * kDegreesPerRadian}};
+                     {"normal_spread_deg", p->normal_spread * kDegreesPerRadian},
+                     {"creased", check.creased}};
   if (cap)
     j["cap"] = {{"point", vec(cap->point)},
                 {"normal", vec(cap->normal)},
@@ -113,6 +116,7 @@ std::string html_report(const FitJobResult& r, const json& report, const std::st
   html.add_heading("Method");
   html.add_paragraph(r.reason);
   if (r.reject_outliers) html.add_paragraph(outlier_summary(r));
+  for (const std::string& w : r.warnings) html.add_paragraph("Warning: " + w + ".");
   html.add_paragraph("Frame: " + report["frame"]["reason"].get<std::string>());
   if (report.contains("quadric") && !report["quadric"].is_null())
     html.add_paragraph("Best-fit quadric: " + report["quadric"]["type"].get<std::string>() +
@@ -184,8 +188,8 @@ json fit_report_fields(const FitJobResult& r) {
       if (s.closed)
         j["seam"] = {{"gap_mm", s.seam.gap},
                      {"normal_angle_deg", s.seam.normal_angle * kDegreesPerRadian}};
-      j["poles"] = {{"north", pole_json(s.north, s.north_pole, s.north_cap)},
-                    {"south", pole_json(s.south, s.south_pole, s.south_cap)}};
+      j["poles"] = {{"north", pole_json(s.north, s.north_check, s.north_pole, s.north_cap)},
+                    {"south", pole_json(s.south, s.south_check, s.south_pole, s.south_cap)}};
     } else {
       const CylindricalFit& c = std::get<CylindricalFit>(f.fit);
       j["closed"] = c.closed;
@@ -217,6 +221,7 @@ json fit_report_fields(const FitJobResult& r) {
                      {"threshold_mm", o.threshold},
                      {"largest_mm", o.largest}};
   }
+  j["warnings"] = r.warnings;
   return j;
 }
 

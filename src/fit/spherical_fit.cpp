@@ -36,6 +36,16 @@ PoleReport pole_to_global(PoleReport p, const LocalFrame& f) {
   return p;
 }
 
+// The pole's distance from the data (polar angle `nearest`) and its measured normal spread judged.
+PoleCheck pole_check(PoleTreatment t, double nearest, const std::optional<PoleReport>& measured,
+                     double reach) {
+  PoleCheck c;
+  c.nearest_data = nearest;
+  c.extrapolated = t != PoleTreatment::none && nearest > reach;
+  c.creased = measured && measured->normal_spread > kMaxPoleNormalSpread;
+  return c;
+}
+
 }  // namespace
 
 // Bae 2002, §3.1 Steps 1-5 with §3.3 and §4.3.
@@ -54,7 +64,8 @@ SphericalFit fit_spherical(const Eigen::Matrix3Xd& points, const SphericalFitOpt
   SphericalCoordinates sc = spherical_coordinates(local, threads);
   const AzimuthRange range = azimuth_range(sc.theta, opt.closure, opt.closed_gap);
   unwrap_angles(sc.theta, range.start);
-  double phi0 = sc.phi.minCoeff(), phi1 = sc.phi.maxCoeff();
+  const double data_phi0 = sc.phi.minCoeff(), data_phi1 = sc.phi.maxCoeff();
+  double phi0 = data_phi0, phi1 = data_phi1;
   const PoleTreatment north = resolve(opt.north, phi0 <= opt.pole_reach);
   const PoleTreatment south = resolve(opt.south, phi1 >= std::numbers::pi - opt.pole_reach);
   if ((north == PoleTreatment::cap || south == PoleTreatment::cap) && !range.closed)
@@ -124,6 +135,9 @@ SphericalFit fit_spherical(const Eigen::Matrix3Xd& points, const SphericalFitOpt
   std::optional<PoleReport> north_pole, south_pole;
   if (pole_rows(north) > 0) north_pole = pole_to_global(pole_continuity(local_surface, true), frame.frame);
   if (pole_rows(south) > 0) south_pole = pole_to_global(pole_continuity(local_surface, false), frame.frame);
+  const PoleCheck north_check = pole_check(north, data_phi0, north_pole, opt.pole_reach);
+  const PoleCheck south_check =
+      pole_check(south, std::numbers::pi - data_phi1, south_pole, opt.pole_reach);
   NurbsSurface surface = frame.frame.to_global(local_surface);
   times.product = clock.lap();
   FitReport rep = make_report(fit, surface.degree_u(), surface.degree_v(), surface.size_u(),
@@ -143,6 +157,8 @@ SphericalFit fit_spherical(const Eigen::Matrix3Xd& points, const SphericalFitOpt
                       south,
                       north_pole,
                       south_pole,
+                      north_check,
+                      south_check,
                       std::move(check),
                       std::move(rep)};
 }

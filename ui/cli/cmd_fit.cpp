@@ -106,6 +106,8 @@ void run(const FitArgs& a) {
   if (r.dropped > 0)
     std::cerr << "polarform: warning: " << r.dropped << " bad records skipped in "
               << scan.string() << "\n";
+  for (const std::string& w : r.warnings)
+    std::cerr << "polarform: warning: " << scan.string() << ": " << w << "\n";
   if (a.quiet) return;
   const FitReport& rep = r.report();
   std::printf("%s fit: %s\n", r.method.c_str(), r.reason.c_str());

@@ -1,7 +1,7 @@
 // The fit job on synthetic scans with known answers: the method chosen, the exact degrees of true
 // circles, spheres, cylinders and surfaces of revolution with round-off errors, a noisy
 // rotational freeform shape fitted to the noise level; a profile with its bore named as two loops,
-// outliers refused or rejected.
+// outliers refused or rejected, an extrapolated pole warned about.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -154,10 +154,43 @@ TEST(FitJob, OutliersAreRefusedOrRejectedAsAsked) {
   EXPECT_EQ(rep.error.count, 3000u);
   EXPECT_NEAR(rep.error.rms, 0.01, 0.001);
   EXPECT_NEAR(rep.outliers.largest, 4.0, 0.05);
+  EXPECT_TRUE(r.warnings.empty());
   // A fit project carries the option.
   FitProject project;
   project.reject_outliers = true;
   EXPECT_TRUE(fit_job_options(project).reject_outliers);
+}
+
+// Points on the sphere of radius 25 about the origin with polar angle φ ≥ phi0, area-uniform.
+Eigen::Matrix3Xd sphere_from(double phi0, int n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> C(-1.0, std::cos(phi0)), T(0, 2 * kPi);
+  Eigen::Matrix3Xd p(3, n);
+  for (int k = 0; k < n; ++k) {
+    const double c = C(rng), s = std::sqrt(1 - c * c), t = T(rng);
+    p.col(k) << 25 * s * std::cos(t), 25 * s * std::sin(t), 25 * c;
+  }
+  return p;
+}
+
+// A G1 pole over a 25° hole is extrapolated, and the job says so; scanned to the poles, no
+// warning.
+TEST(FitJob, AnExtrapolatedPoleIsWarnedAbout) {
+  FitJobOptions o;
+  o.method = FitJobMethod::spherical;
+  o.pole = PoleTreatment::g1;
+  o.center = Eigen::Vector3d::Zero();
+  o.axis = Eigen::Vector3d::UnitZ();
+  const FitJobResult gap = run_fit_job(sphere_from(25 * kPi / 180, 4000, 3), "gap", o);
+  ASSERT_EQ(gap.warnings.size(), 1u);
+  const std::string& w = gap.warnings[0];
+  EXPECT_EQ(w.rfind("spherical fit: the north pole is extrapolated: no data within 10° of it (the "
+                    "nearest point is 25.",
+                    0),
+            0u)
+      << w;
+  const FitJobResult full = run_fit_job(sphere_from(0.0, 4000, 4), "full", o);
+  EXPECT_TRUE(full.warnings.empty());
 }
 
 TEST(FitJob, BadOptionsAreInputErrors) {

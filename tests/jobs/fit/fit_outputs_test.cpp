@@ -1,5 +1,5 @@
 // The fit job's files: everything listed is written, report.json carries the documented fields
-// with sane values (rejected outliers too), deviation.ply holds one point per input
+// with sane values (poles, warnings, rejected outliers), deviation.ply holds one point per input
 // point, and a broken scan stops the job with an error naming its line before anything is written.
 #include <gtest/gtest.h>
 
@@ -61,6 +61,21 @@ TEST(FitOutputs, SphereLikeExampleWritesEveryFileAndASaneReport) {
   EXPECT_EQ(deviation.points.cols(), 3000);
   EXPECT_TRUE(deviation.points.isApprox(r.points, 0.0));
 
+  // Its default G0 poles: data within 4° of each, and normals that spread by more than 1° there
+  // (σ = 0.02 mm over 3000 points leaves F_u near the pole to the noise): creased, and said so.
+  for (const char* pole : {"north", "south"}) {
+    const auto& p = j["poles"][pole];
+    EXPECT_EQ(p["treatment"], "g0");
+    EXPECT_LT(p["nearest_data_deg"].get<double>(), 4.0);
+    EXPECT_EQ(p["extrapolated"], false);
+    EXPECT_GT(p["measured"]["normal_spread_deg"].get<double>(), 1.0);
+    EXPECT_EQ(p["measured"]["creased"], true);
+  }
+  ASSERT_EQ(j["warnings"].size(), 2u);
+  EXPECT_EQ(j["warnings"][0].get<std::string>().rfind(
+                "spherical fit: the north pole creases: its normals spread by ", 0),
+            0u);
+  EXPECT_EQ(j["warnings"], nlohmann::json(r.warnings));
   EXPECT_FALSE(j.contains("outliers"));  // only with reject_outliers
 }
 

@@ -1,6 +1,6 @@
 // The polarform binary on the fit-family commands: exit code 0 and the outputs on the bundled
 // examples, exit code 2 with one error line naming the line on a broken scan, and no files then;
-// a profile with its bore named as two loops, outliers refused or rejected.
+// a profile with its bore named as two loops, outliers refused or rejected, a pole warned about.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -288,6 +288,7 @@ TEST(Cli, FitRefusesAFewOutliersAndRejectsThemWhenAsked) {
   EXPECT_NEAR(report["outliers"]["largest_mm"].get<double>(), 4.0, 0.05);
   EXPECT_EQ(report["error_mm"]["count"], 3000);
   EXPECT_NEAR(report["error_mm"]["rms"].get<double>(), 0.01, 0.001);
+  EXPECT_EQ(report["warnings"], nlohmann::json::array());
 
   write_text(dir / "fit.xml",
              "<polarform version=\"1\"><fit scan=\"spiky.xyz\" "
@@ -300,6 +301,41 @@ TEST(Cli, FitRefusesAFewOutliersAndRejectsThemWhenAsked) {
 
   const Outcome help = polarform("fit --help", dir, true);
   EXPECT_NE(help.out.find("--reject-outliers"), std::string::npos) << help.out;
+}
+
+// A G1 pole closed over a 25° hole rests on no data: a warning on stderr (also with -q) and in
+// report.json; scanned to the poles, none.
+TEST(Cli, FitWarnsAboutAnExtrapolatedPole) {
+  const auto dir = scratch_dir();
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> C(-1.0, std::cos(25 * 3.141592653589793 / 180)),
+      T(0, 2 * 3.141592653589793);
+  Eigen::Matrix3Xd p(3, 4000);
+  for (Eigen::Index k = 0; k < p.cols(); ++k) {
+    const double c = C(rng), s = std::sqrt(1 - c * c), t = T(rng);
+    p.col(k) << 25 * s * std::cos(t), 25 * s * std::sin(t), 25 * c;
+  }
+  const std::string scan = write_text(dir / "gap.xyz", xyz_text(p)).string();
+  const Outcome r = polarform("fit " + scan +
+                                  " --method spherical --pole g1 --center 0,0,0 "
+                                  "--axis 0,0,1 -q --out " +
+                                  (dir / "gap").string(),
+                              dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err.rfind("polarform: warning: " + scan +
+                            ": spherical fit: the north pole is extrapolated: no data within 10° "
+                            "of it (the nearest point is 25.",
+                        0),
+            0u)
+      << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1);
+  const nlohmann::json report = read_json(dir / "gap/report.json");
+  EXPECT_EQ(report["poles"]["north"]["extrapolated"], true);
+  EXPECT_NEAR(report["poles"]["north"]["nearest_data_deg"].get<double>(), 25.0, 0.2);
+  EXPECT_EQ(report["poles"]["south"]["extrapolated"], false);
+  ASSERT_EQ(report["warnings"].size(), 1u);
+  EXPECT_EQ("polarform: warning: " + scan + ": " + report["warnings"][0].get<std::string>() + "\n",
+            r.err);
 }
 
 TEST(Cli, BadOptionsExitTwo) {
