@@ -35,6 +35,7 @@ PolarCurveFit fit_profile(const Eigen::Matrix2Xd& points, const ScannedCamOption
   po.function.size_v = o.contour_ctrl;
   po.function.fairness.mode = FairnessOptions::Mode::gcv;
   po.function.threads = o.threads;
+  po.outliers = OutlierPolicy::keep;  // the contour as extracted: its deviations are the inspection
   return fit_polar_curve(points, po);
 }
 

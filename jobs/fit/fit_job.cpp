@@ -5,6 +5,7 @@
 
 #include "src/error.h"
 #include "src/io/point_cloud.h"
+#include "src/number_text.h"
 
 namespace polarform {
 
@@ -37,9 +38,14 @@ std::string plane_text(const CloudPlane& p) {
   return s.str();
 }
 
+OutlierPolicy outlier_policy(const FitJobOptions& o) {
+  return o.reject_outliers ? OutlierPolicy::reject : OutlierPolicy::refuse;
+}
+
 RotationalFitOptions rotational_options(const FitJobOptions& o) {
   if (o.ctrl) check_control_net_size(o.ctrl->first, o.ctrl->second, "--ctrl");
   RotationalFitOptions ro;
+  ro.spherical.outliers = ro.cylindrical.outliers = outlier_policy(o);
   ro.spherical.function = ro.cylindrical.function = function_options(o);
   ro.spherical.frame.origin = ro.cylindrical.frame.origin = o.center;
   ro.spherical.frame.axis = ro.cylindrical.frame.axis = o.axis;
@@ -80,11 +86,32 @@ ProfileFit fit_profile(const FitInput& in, const CloudPlane& plane, const FitJob
   po.function = function_options(o);
   po.closure = o.closure;
   po.base_kind = o.base;
+  po.outliers = outlier_policy(o);
   if (o.center) po.centre = plane.frame.to_local(*o.center).head<2>();
   const Eigen::Matrix2Xd local = plane.frame.to_local(in.points).topRows(2);
   PolarCurveFit polar = fit_polar_curve(local, po);
   NurbsCurve3d curve = curve_in_space(polar.curve, plane.frame);
   return {std::move(polar), std::move(curve)};
+}
+
+// A closed pole that creases or rests on no data (SphericalFit::north_check, south_check).
+void add_pole_warnings(const SphericalFit& f, double reach, std::vector<std::string>& warnings) {
+  const std::pair<const char*, const PoleCheck*> poles[] = {{"north", &f.north_check},
+                                                            {"south", &f.south_check}};
+  for (const auto& [name, check] : poles) {
+    const std::optional<PoleReport>& measured = name[0] == 'n' ? f.north_pole : f.south_pole;
+    if (check->creased)
+      warnings.push_back("spherical fit: the " + std::string(name) +
+                         " pole creases: its normals spread by " +
+                         degrees_text(measured->normal_spread) + " about their mean (more than " +
+                         degrees_text(kMaxPoleNormalSpread) +
+                         "), so it has no tangent plane; --pole g1 gives it one");
+    if (check->extrapolated)
+      warnings.push_back("spherical fit: the " + std::string(name) +
+                         " pole is extrapolated: no data within " + degrees_text(reach) +
+                         " of it (the nearest point is " + degrees_text(check->nearest_data) +
+                         " away)");
+  }
 }
 
 FitReport& report_of(std::variant<ProfileFit, RotationalFit>& fit) {
@@ -111,6 +138,7 @@ FitJobOptions fit_job_options(const FitProject& p) {
   o.center = p.center;
   o.axis = p.axis;
   o.skip_bad = p.skip_bad;
+  o.reject_outliers = p.reject_outliers;
   o.fairness = p.fairness;
   o.fairness_weight = p.fairness_weight;
   o.base = p.base;
@@ -165,6 +193,10 @@ FitJobResult fit_cloud(FitInput in, const FitJobOptions& o) {
     method = to_string(s.method());
     reason = s.reason;
   }
+  std::vector<std::string> warnings;
+  if (const auto* r = std::get_if<RotationalFit>(&fit))
+    if (const auto* sphere = std::get_if<SphericalFit>(&r->fit))
+      add_pole_warnings(*sphere, rotational.spherical.pole_reach, warnings);
   FitReport& rep = report_of(fit);
   rep.times.read = in.read_seconds;
   rep.times.total += in.read_seconds;
@@ -178,6 +210,8 @@ FitJobResult fit_cloud(FitInput in, const FitJobOptions& o) {
           o.fairness,
           o.fairness_weight,
           o.base,
+          o.reject_outliers,
+          std::move(warnings),
           in.read_seconds + clock.lap()};
 }
 

@@ -12,6 +12,7 @@
 #include <string>
 #include <utility>
 #include <variant>
+#include <vector>
 
 #include "designers/scan/cloud_plane.h"
 #include "jobs/project/fit_project.h"
@@ -31,6 +32,9 @@ struct FitJobOptions {
   std::optional<Eigen::Vector3d> center;  // frame origin / polar centre (projected)
   std::optional<Eigen::Vector3d> axis;    // frame k / normal of a profile's plane
   bool skip_bad = false;
+  // Leave outliers out of the fit (trimmed least squares at 8 robust σ) instead of refusing a
+  // cloud with a few (src/fit/outliers.h).
+  bool reject_outliers = false;
   FairnessOptions::Mode fairness = FairnessOptions::Mode::relative;  // how λ is chosen
   double fairness_weight = 1e-7;  // λ (fixed) or its scale-free weight (relative); gcv: unused
   ArcKind base = ArcKind::rqb;    // the base circles' arcs
@@ -75,6 +79,8 @@ struct FitJobResult {
   FairnessOptions::Mode fairness = FairnessOptions::Mode::relative;  // as asked
   double fairness_weight = 1e-7;
   ArcKind base = ArcKind::rqb;
+  bool reject_outliers = false;       // as asked; what was left out: report().outliers
+  std::vector<std::string> warnings;  // about the fit: a pole that creases or is extrapolated
   double seconds = 0.0;  // read + fit
 
   bool profile() const { return std::holds_alternative<ProfileFit>(fit); }

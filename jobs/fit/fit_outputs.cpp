@@ -58,13 +58,16 @@ json quadric_json(const QuadricFit& q) {
               {"rms_sampson_distance_mm", q.rms_distance}};
 }
 
-json pole_json(PoleTreatment t, const std::optional<PoleReport>& p,
+json pole_json(PoleTreatment t, const PoleCheck& check, const std::optional<PoleReport>& p,
                const std::optional<PoleCap>& cap) {
-  json j{{"treatment", pole_word(t)}};
+  json j{{"treatment", pole_word(t)},
+         {"nearest_data_deg", check.nearest_data * kDegreesPerRadian},
+         {"extrapolated", check.extrapolated}};
   if (p)
     j["measured"] = {{"point", vec(p->point)},
                      {"gap_mm", p->gap},
-                     {"normal_spread_deg", p->normal_spread * kDegreesPerRadian}};
+                     {"normal_spread_deg", p->normal_spread * kDegreesPerRadian},
+                     {"creased", check.creased}};
   if (cap)
     j["cap"] = {{"point", vec(cap->point)},
                 {"normal", vec(cap->normal)},
@@ -112,6 +115,8 @@ std::string html_report(const FitJobResult& r, const json& report, const std::st
                         {"max distance", um(rep.error.max)}});
   html.add_heading("Method");
   html.add_paragraph(r.reason);
+  if (r.reject_outliers) html.add_paragraph(outlier_summary(r));
+  for (const std::string& w : r.warnings) html.add_paragraph("Warning: " + w + ".");
   html.add_paragraph("Frame: " + report["frame"]["reason"].get<std::string>());
   if (report.contains("quadric") && !report["quadric"].is_null())
     html.add_paragraph("Best-fit quadric: " + report["quadric"]["type"].get<std::string>() +
@@ -139,6 +144,17 @@ std::string html_report(const FitJobResult& r, const json& report, const std::st
 }  // namespace
 
 double deviation_color_limit(const FitJobResult& r) { return std::max(r.report().error.p99, 1e-9); }
+
+std::string outlier_summary(const FitJobResult& r) {
+  const FitReport& rep = r.report();
+  const OutlierReport& o = rep.outliers;
+  std::string text = "Outliers: " + std::to_string(o.count) + " of " +
+                     std::to_string(r.points.cols()) + " points rejected at > " +
+                     number_text(kOutlierSigmas) + " σ (σ = " + number_text(o.scale) +
+                     " mm, threshold " + number_text(o.threshold) + " mm";
+  if (o.count > 0) text += "; largest " + number_text(o.largest) + " mm";
+  return text + "); the distances are of the " + std::to_string(rep.error.count) + " points kept.";
+}
 
 json fit_report_fields(const FitJobResult& r) {
   const FitReport& rep = r.report();
@@ -172,8 +188,8 @@ json fit_report_fields(const FitJobResult& r) {
       if (s.closed)
         j["seam"] = {{"gap_mm", s.seam.gap},
                      {"normal_angle_deg", s.seam.normal_angle * kDegreesPerRadian}};
-      j["poles"] = {{"north", pole_json(s.north, s.north_pole, s.north_cap)},
-                    {"south", pole_json(s.south, s.south_pole, s.south_cap)}};
+      j["poles"] = {{"north", pole_json(s.north, s.north_check, s.north_pole, s.north_cap)},
+                    {"south", pole_json(s.south, s.south_check, s.south_pole, s.south_cap)}};
     } else {
       const CylindricalFit& c = std::get<CylindricalFit>(f.fit);
       j["closed"] = c.closed;
@@ -197,6 +213,15 @@ json fit_report_fields(const FitJobResult& r) {
   j["error_kind"] = "true closest-point distance from each input point to the fitted geometry";
   j["radial_error_mm"] = stats(rep.radial);
   j["deviation_color_limit_mm"] = deviation_color_limit(r);
+  if (r.reject_outliers) {
+    const OutlierReport& o = rep.outliers;
+    j["outliers"] = {{"rejected", o.count},
+                     {"threshold_sigma", kOutlierSigmas},
+                     {"sigma_mm", o.scale},
+                     {"threshold_mm", o.threshold},
+                     {"largest_mm", o.largest}};
+  }
+  j["warnings"] = r.warnings;
   return j;
 }
 

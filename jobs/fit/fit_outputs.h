@@ -18,6 +18,10 @@ namespace polarform {
 // Half-width of the deviation colour scale: p99 of |d| (at least 1e-9 mm).
 double deviation_color_limit(const FitJobResult& r);
 
+// "Outliers: 5 of 3005 points rejected at > 8 σ (σ = … mm, threshold … mm; largest … mm); the
+// distances are of the 3000 points kept." — with --reject-outliers, the CLI summary and the HTML.
+std::string outlier_summary(const FitJobResult& r);
+
 // The report's fields of the fit (method and why, quadric, frame, degrees, nets, errors), without
 // the version, command, timings and files.
 nlohmann::ordered_json fit_report_fields(const FitJobResult& r);

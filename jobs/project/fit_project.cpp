@@ -70,6 +70,7 @@ void read_fit(const XMLElement* e, const std::string& file, std::vector<UnknownN
     if (p.axis->norm() == 0.0) r.fail("axis", "a non-zero direction x,y,z");
   }
   p.skip_bad = r.choice("skip-bad", {"true", "false"}, "false") == "true";
+  p.reject_outliers = r.choice("reject-outliers", {"true", "false"}, "false") == "true";
   p.fairness = from_word<FairnessOptions::Mode>(
       r.choice("fairness", {"fixed", "relative", "gcv"}, "relative"), kFairness);
   if (r.has("lambda")) p.fairness_weight = r.positive("lambda");
@@ -147,6 +148,7 @@ std::string fit_project_xml(const FitProject& p) {
   if (p.center) attribute(out, "center", list({p.center->x(), p.center->y(), p.center->z()}));
   if (p.axis) attribute(out, "axis", list({p.axis->x(), p.axis->y(), p.axis->z()}));
   attribute(out, "skip-bad", p.skip_bad ? "true" : "false");
+  attribute(out, "reject-outliers", p.reject_outliers ? "true" : "false");
   attribute(out, "fairness", fairness_word(p.fairness));
   attribute(out, "lambda", format_round_trip(p.fairness_weight));
   attribute(out, "base", p.base == ArcKind::quartic ? "quartic" : "rqb");

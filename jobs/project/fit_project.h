@@ -34,6 +34,7 @@ struct FitProject {
   std::optional<Eigen::Vector3d> center;  // frame origin / polar centre, mm
   std::optional<Eigen::Vector3d> axis;    // frame axis k / a profile's plane normal
   bool skip_bad = false;
+  bool reject_outliers = false;  // leave outliers out of the fit instead of refusing the scan
   // Fairing of F (Bae 2002, §3.4.2): how λ is chosen, and the weight of the fixed / relative rule.
   FairnessOptions::Mode fairness = FairnessOptions::Mode::relative;
   double fairness_weight = 1e-7;
@@ -55,7 +56,7 @@ std::filesystem::path scan_path(const FitProject& project,
 //   <fit scan="cloud.ply" method="auto|polar|spherical|cylindrical" closed="auto|yes|no"
 //        pole="none|g1|cap" degree="3,3" ctrl="12,12" tolerance="mm"
 //        tolerance-measure="max|p99|p95|rms" center="x,y,z" axis="x,y,z" skip-bad="false"
-//        fairness="fixed|relative|gcv" lambda="1e-7" base="rqb|quartic"/>
+//        reject-outliers="false" fairness="fixed|relative|gcv" lambda="1e-7" base="rqb|quartic"/>
 // Throws InputError "file:line: <fit> attribute 'x': expected …" for bad values, and for unknown
 // attributes or elements, which UnknownNames::warn turns into warnings.
 FitProject read_fit_project(const std::filesystem::path& file, std::vector<std::string>& warnings,

@@ -5,6 +5,8 @@
 
 #include "src/error.h"
 #include "src/fit/fit_pipeline.h"
+#include "src/fit/trimmed_fit.h"
+#include "src/number_text.h"
 #include "src/nurbs/symbolic_product.h"
 #include "src/units.h"
 
@@ -31,22 +33,30 @@ CylindricalFit fit_cylindrical(const Eigen::Matrix3Xd& points, const Cylindrical
   times.sync = clock.lap();
 
   SingleValuedness check;
-  if (opt.check_single_valued) {
+  const Eigen::VectorXd arc = cc.r.mean() * cc.theta;  // r̄·θ: comparable with z
+  const auto folds = [&] {
     const double rbar = cc.r.mean();
-    check = check_single_valued(cc.z, Eigen::VectorXd(rbar * cc.theta), cc.r, threads);
-    if (!check.single_valued) {
-      std::ostringstream msg;
-      msg.precision(6);
-      msg << "cylindrical fit: the data is not single-valued about the axis through ("
-          << frame.frame.origin.transpose() << ") along (" << frame.frame.axes.col(2).transpose()
-          << "): rays from it cross the data more than once at "
-          << describe_folds(check, "z", 1.0, "theta (deg)", kDegreesPerRadian / rbar) << "; noise "
-          << check.noise << ". Choose another axis, try the spherical fit, or use a "
-          << "general (parametric) surface fitter";
-      throw InputError(msg.str());
-    }
+    std::ostringstream msg;
+    msg.precision(6);
+    msg << "cylindrical fit: the data is not single-valued about the axis through ("
+        << frame.frame.origin.transpose() << ") along (" << frame.frame.axes.col(2).transpose()
+        << "): rays from it cross the data more than once at "
+        << describe_folds(check, "z", 1.0, "theta (deg)", kDegreesPerRadian / rbar) << "; noise "
+        << check.noise << ". Choose another axis, try the spherical fit, or use a "
+        << "general (parametric) surface fitter";
+    return InputError(msg.str());
+  };
+  if (opt.check_single_valued) {
+    check = check_single_valued(cc.z, arc, cc.r, threads);
     require_thin_data(check, "cylindrical fit");
   }
+  OutlierReport outliers = settle_outliers(
+      opt.outliers, cc.z, arc, cc.r, check, opt.check_single_valued, "cylindrical fit",
+      [&](Eigen::Index k) {
+        return "z " + number_text(cc.z[k]) + " mm, theta " +
+               number_text(degrees_in_turn(cc.theta[k])) + " deg";
+      },
+      folds, threads);
   times.check = clock.lap();
   progress(0.15);
 
@@ -56,16 +66,16 @@ CylindricalFit fit_cylindrical(const Eigen::Matrix3Xd& points, const Cylindrical
   Samples samples;
   samples.u = (cc.z.array() - z0) / (z1 - z0);
   samples.v = synchronize(base.azimuth(), cc.theta, threads);
-  samples.value = std::move(cc.r);
+  samples.value = cc.r;
   times.sync += clock.lap();
 
   const FunctionSpace space{0.0, 1.0, base.azimuth().curve().front(), base.azimuth().curve().back(),
                             range.closed};
-  std::size_t unconverged = 0;
-  const ErrorMeasure measure = distance_measure(
-      [&base](const BSplineSurface& F) { return ProductGeometry::cylindrical(F, base); }, local,
-      samples, threads, &unconverged);
-  FunctionFitResult fit = fit_function(samples, space, with_progress_range(opt.function, 0.15, 0.95), measure);
+  TrimmedFit trimmed = fit_trimmed(
+      samples, local, space, with_progress_range(opt.function, 0.15, 0.95),
+      [&base](const BSplineSurface& F) { return ProductGeometry::cylindrical(F, base); },
+      outliers.points);
+  FunctionFitResult& fit = trimmed.fit;
 
   // S = (F·X, F·Y, Z) (B.3), (3.8), then global coordinates (4.6).
   clock.lap();
@@ -75,7 +85,8 @@ CylindricalFit fit_cylindrical(const Eigen::Matrix3Xd& points, const Cylindrical
   NurbsSurface surface = frame.frame.to_global(local_surface);
   times.product = clock.lap();
   FitReport rep = make_report(fit, surface.degree_u(), surface.degree_v(), surface.size_u(),
-                              surface.size_v(), samples, threads, unconverged, times);
+                              surface.size_v(), trimmed.kept, threads, trimmed.unconverged, times);
+  rep.outliers = std::move(outliers);
   rep.times.total = total.lap();
   progress(1.0);
   return CylindricalFit{std::move(surface), std::move(fit.F), std::move(base), std::move(frame),

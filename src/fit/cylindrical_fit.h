@@ -15,6 +15,7 @@
 #include "src/fit/function_fit.h"
 #include "src/fit/local_frame.h"
 #include "src/fit/orthogonal_coordinates.h"
+#include "src/fit/outliers.h"
 #include "src/fit/single_valued_check.h"
 #include "src/io/point_cloud.h"
 
@@ -36,6 +37,7 @@ struct CylindricalFitOptions {
   Closure closure = Closure::automatic;
   double closed_gap = 0.0;
   bool check_single_valued = true;
+  OutlierPolicy outliers = OutlierPolicy::refuse;
 };
 
 struct CylindricalFit {
@@ -49,9 +51,9 @@ struct CylindricalFit {
   FitReport report;
 };
 
-// Throws InputError for bad input, a frame that cannot be estimated, or data that is not
-// single-valued about the axis (naming the z, θ ranges); NumericalError when the tolerance cannot
-// be met.
+// Throws InputError for bad input, a frame that cannot be estimated, a few outliers (under
+// refuse, with their count), or data that is not single-valued about the axis (naming the z, θ
+// ranges); NumericalError when the tolerance cannot be met.
 CylindricalFit fit_cylindrical(const Eigen::Matrix3Xd& points, const CylindricalFitOptions& options = {});
 CylindricalFit fit_cylindrical(const std::filesystem::path& file,
                                const CylindricalFitOptions& options = {}, const ReadOptions& read = {});

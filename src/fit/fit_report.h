@@ -8,6 +8,7 @@
 #include <cstddef>
 
 #include "src/fit/error_stats.h"
+#include "src/fit/outliers.h"
 #include "src/fit/stage_times.h"
 
 namespace polarform {
@@ -20,9 +21,10 @@ struct FitReport {
   double lambda = 0.0;               // fairness weight used
   double dof = -1.0;                 // effective parameters (gcv only)
   int refinements = 0;               // knot-refinement rounds for a tolerance
-  ErrorStats error;                  // |closest-point distance|
-  ErrorStats radial;                 // |ρ_k − F(u_k, v_k)| along the rays (parametric error)
+  ErrorStats error;                  // |closest-point distance| of the points fitted (not outliers)
+  ErrorStats radial;                 // |ρ_k − F(u_k, v_k)| along the rays, likewise
   Eigen::VectorXd signed_distance;   // per input point, positive outside (away from centre/axis)
+  OutlierReport outliers;            // the points left out under OutlierPolicy::reject
   std::size_t unconverged = 0;       // closest-point searches that hit their iteration limit
   StageTimes times;
 };

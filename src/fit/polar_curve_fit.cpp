@@ -9,6 +9,9 @@
 #include "src/fit/circle_fit.h"
 #include "src/fit/fit_pipeline.h"
 #include "src/fit/orthogonal_coordinates.h"
+#include "src/fit/profile_loops.h"
+#include "src/fit/trimmed_fit.h"
+#include "src/number_text.h"
 #include "src/nurbs/symbolic_product.h"
 #include "src/units.h"
 
@@ -52,19 +55,28 @@ PolarCurveFit fit_polar_curve(const Eigen::Matrix2Xd& points, const PolarFitOpti
   times.sync = clock.lap();
 
   SingleValuedness check;
+  const auto folds = [&] {
+    std::ostringstream msg;
+    msg.precision(6);
+    msg << "polar curve fit: the data is not single-valued about the centre (" << centre.x() << ", "
+        << centre.y() << "): rays from it cross the data more than once at "
+        << describe_folds(check, "theta (deg)", kDegreesPerRadian) << "; noise " << check.noise
+        << ". Choose another centre, split the data, or use a general (parametric) fitter";
+    return InputError(msg.str());
+  };
   if (opt.check_single_valued) {
     check = check_single_valued(pc.theta, Eigen::VectorXd(), pc.r, threads);
     if (!check.single_valued) {
-      std::ostringstream msg;
-      msg.precision(6);
-      msg << "polar curve fit: the data is not single-valued about the centre (" << centre.x()
-          << ", " << centre.y() << "): rays from it cross the data more than once at "
-          << describe_folds(check, "theta (deg)", kDegreesPerRadian) << "; noise " << check.noise
-          << ". Choose another centre, split the data, or use a general (parametric) fitter";
-      throw InputError(msg.str());
+      const std::string loops = describe_loops(profile_contours(local), centre);
+      if (!loops.empty()) throw InputError("polar curve fit: " + loops);
     }
     require_thin_data(check, "polar curve fit");
   }
+  OutlierReport outliers = settle_outliers(
+      opt.outliers, pc.theta, Eigen::VectorXd(), pc.r, check, opt.check_single_valued,
+      "polar curve fit",
+      [&](Eigen::Index k) { return "theta " + number_text(degrees_in_turn(pc.theta[k])) + " deg"; },
+      folds, threads);
   times.check = clock.lap();
 
   // Steps 2-3: base circle (2.3) and synchronization (2.7)-(2.8).
@@ -85,11 +97,11 @@ PolarCurveFit fit_polar_curve(const Eigen::Matrix2Xd& points, const PolarFitOpti
   fo.max_size_u = 1;
   const FunctionSpace space{0.0, 1.0, base.curve().front(), base.curve().back(), range.closed, false,
                             false, false};
-  std::size_t unconverged = 0;
-  const ErrorMeasure measure = distance_measure(
-      [&base](const BSplineSurface& F) { return ProductGeometry::polar(F, base); }, local3, samples,
-      threads, &unconverged);
-  FunctionFitResult fit = fit_function(samples, space, fo, measure);
+  TrimmedFit trimmed = fit_trimmed(
+      samples, local3, space, fo,
+      [&base](const BSplineSurface& F) { return ProductGeometry::polar(F, base); },
+      outliers.points);
+  FunctionFitResult& fit = trimmed.fit;
 
   // Step 5: C(u) = F(u)·B(u) (2.10), then back to the input coordinates.
   clock.lap();
@@ -98,7 +110,9 @@ PolarCurveFit fit_polar_curve(const Eigen::Matrix2Xd& points, const PolarFitOpti
   NurbsCurve2d curve = translated(product(F, base.curve()), centre);
   times.product = clock.lap();
 
-  FitReport rep = make_report(fit, 0, curve.degree(), 1, curve.size(), samples, threads, unconverged, times);
+  FitReport rep = make_report(fit, 0, curve.degree(), 1, curve.size(), trimmed.kept, threads,
+                              trimmed.unconverged, times);
+  rep.outliers = std::move(outliers);
   rep.times.total = total.lap();
   return PolarCurveFit{std::move(curve), std::move(F), std::move(base), centre, centre_reason.str(),
                        range.closed, std::move(check), std::move(rep)};

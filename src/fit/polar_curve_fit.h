@@ -3,7 +3,7 @@
 // range → parameter synchronization (2.7)-(2.8) → a single-valued B-spline r = F(u) of degree p →
 // C(u) = F(u)·B(u) by the symbolic product (2.10). Full-circle data gives a closed fit (periodic F,
 // §3.3.1, clipped). Data that rays from the centre cross more than once is refused, naming the
-// angle ranges, instead of being fitted.
+// loops or the angle ranges, instead of being fitted; outliers are refused or left out.
 #pragma once
 
 #include <Eigen/Core>
@@ -16,6 +16,7 @@
 #include "src/fit/function_fit.h"
 #include "src/fit/local_frame.h"
 #include "src/fit/orthogonal_coordinates.h"
+#include "src/fit/outliers.h"
 #include "src/fit/single_valued_check.h"
 #include "src/nurbs/nurbs_curve.h"
 
@@ -32,6 +33,7 @@ struct PolarFitOptions {
   Closure closure = Closure::automatic;
   double closed_gap = 0.0;  // largest angular gap (rad) still called closed; <= 0: automatic
   bool check_single_valued = true;
+  OutlierPolicy outliers = OutlierPolicy::refuse;
 };
 
 struct PolarCurveFit {
@@ -45,8 +47,10 @@ struct PolarCurveFit {
   FitReport report;
 };
 
-// Throws InputError for bad input or data that is not single-valued about the centre (the message
-// lists the angle ranges in degrees), NumericalError when the fit cannot reach its tolerance.
+// Throws InputError for bad input or data that is not single-valued about the centre: two or more
+// loops (a bore, a hole) are named with their radii, a few outliers (under refuse) with their
+// count, else the message lists the angle ranges in degrees; NumericalError when the fit cannot
+// reach its tolerance.
 PolarCurveFit fit_polar_curve(const Eigen::Matrix2Xd& points, const PolarFitOptions& options = {});
 
 // A planar slice of a 3D cloud: the points within thickness/2 of the plane through `origin` with

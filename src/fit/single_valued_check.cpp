@@ -8,72 +8,11 @@
 #include <sstream>
 
 #include "src/error.h"
+#include "src/fit/cell_grid.h"
 
 namespace polarform {
 
 namespace {
-
-constexpr int kPointsPerCell = 32;
-
-struct Grid {
-  int ns = 1, nt = 1;
-  double s0 = 0, t0 = 0, hs = 1, ht = 1;
-  int cell(double s, double t) const {
-    const int i = std::clamp(static_cast<int>((s - s0) / hs), 0, ns - 1);
-    const int j = std::clamp(static_cast<int>((t - t0) / ht), 0, nt - 1);
-    return i * nt + j;
-  }
-};
-
-Grid make_grid(const Eigen::VectorXd& s, const Eigen::VectorXd& t, bool surface) {
-  Grid g;
-  const double n = static_cast<double>(s.size());
-  const double cells = std::clamp(n / kPointsPerCell, 1.0, double(1 << 18));
-  const double sr = std::max(s.maxCoeff() - s.minCoeff(), 1e-300);
-  g.s0 = s.minCoeff();
-  if (surface) {
-    const double tr = std::max(t.maxCoeff() - t.minCoeff(), 1e-300);
-    g.t0 = t.minCoeff();
-    g.ns = std::max(1, static_cast<int>(std::lround(std::sqrt(cells * sr / tr))));
-    g.nt = std::max(1, static_cast<int>(cells / g.ns));
-    g.ht = tr / g.nt * (1 + 1e-12);
-  } else {
-    g.ns = std::max(1, static_cast<int>(cells));
-  }
-  g.hs = sr / g.ns * (1 + 1e-12);
-  return g;
-}
-
-// Residuals of r about its least-squares quadratic in the cell's normalised coordinates, written
-// to res[0, m) for the points idx[0, m); a tiny ridge keeps degenerate cells (collinear points)
-// solvable.
-template <int Terms>
-void detrend(const int* idx, int m, const Eigen::VectorXd& s, const Eigen::VectorXd& t,
-             const Eigen::VectorXd& r, double sc, double tc, double hs, double ht, double* res) {
-  using Vec = Eigen::Matrix<double, Terms, 1>;
-  using Mat = Eigen::Matrix<double, Terms, Terms>;
-  auto row = [&](int a) {
-    Vec x;
-    const double x1 = (s[idx[a]] - sc) / hs;
-    if constexpr (Terms == 3) {
-      x << 1.0, x1, x1 * x1;
-    } else {
-      const double x2 = (t[idx[a]] - tc) / ht;
-      x << 1.0, x1, x1 * x1, x2, x2 * x2, x1 * x2;
-    }
-    return x;
-  };
-  Mat A = Mat::Zero();
-  Vec b = Vec::Zero();
-  for (int a = 0; a < m; ++a) {
-    const Vec x = row(a);
-    A.noalias() += x * x.transpose();
-    b += x * r[idx[a]];
-  }
-  A.diagonal().array() += 1e-12 * A.trace();
-  const Vec c = A.ldlt().solve(b);
-  for (int a = 0; a < m; ++a) res[a] = r[idx[a]] - row(a).dot(c);
-}
 
 // The points' deviations within their own branch: split the cell at the largest gap of the
 // sorted residuals (enough points on both sides, as in branches()) and detrend each side by
@@ -100,7 +39,7 @@ void within_branch_deviations(const int* idx, int m, const double* res, const Ei
     side_res.resize(side_idx.size());
     const int k = static_cast<int>(side_idx.size());
     if (k >= 2 * Terms) {
-      detrend<Terms>(side_idx.data(), k, s, t, r, sc, tc, hs, ht, side_res.data());
+      cell_quadratic_residuals<Terms>(side_idx.data(), k, s, t, r, sc, tc, hs, ht, side_res.data());
     } else {
       const double median = res[order[(from + to) / 2]];
       for (int a = from; a <= to; ++a) side_res[a - from] = res[order[a]] - median;
@@ -194,48 +133,37 @@ SingleValuedness check_single_valued(const Eigen::VectorXd& s, const Eigen::Vect
   const std::size_t n = static_cast<std::size_t>(r.size());
   SingleValuedness out;
   if (n < 16) return out;
-  const Grid g = make_grid(s, t, surface);
-  const int cells = g.ns * g.nt;
-  // Points grouped by cell (counting sort): cell c holds idx[start[c], start[c+1]).
-  std::vector<int> cell_of(n), start(static_cast<std::size_t>(cells) + 1, 0), idx(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    const Eigen::Index e = static_cast<Eigen::Index>(k);
-    cell_of[k] = g.cell(s[e], surface ? t[e] : 0.0);
-    ++start[static_cast<std::size_t>(cell_of[k]) + 1];
-  }
-  std::partial_sum(start.begin(), start.end(), start.begin());
-  {
-    std::vector<int> fill(start.begin(), start.end() - 1);
-    for (std::size_t k = 0; k < n; ++k) idx[static_cast<std::size_t>(fill[static_cast<std::size_t>(cell_of[k])]++)] = static_cast<int>(k);
-  }
+  const CellGrid g(s, t);
+  const int cells = g.cells();
   const int min_points = surface ? 12 : 8;
-  auto size = [&](int c) { return start[static_cast<std::size_t>(c) + 1] - start[static_cast<std::size_t>(c)]; };
+  const auto from = [&](int c) { return static_cast<std::size_t>(g.offset(c)); };
   std::vector<double> res(n, 0.0);
   parallel_chunks(static_cast<std::size_t>(cells), worker_count(threads, static_cast<std::size_t>(cells), 256),
                   [&](std::size_t b, std::size_t e, int) {
     for (int c = static_cast<int>(b); c < static_cast<int>(e); ++c) {
-      if (size(c) < min_points) continue;
-      const double sc = g.s0 + (c / g.nt + 0.5) * g.hs, tc = g.t0 + (c % g.nt + 0.5) * g.ht;
-      const int* id = idx.data() + start[static_cast<std::size_t>(c)];
-      double* rs = res.data() + start[static_cast<std::size_t>(c)];
-      if (surface) detrend<6>(id, size(c), s, t, r, sc, tc, g.hs, g.ht, rs);
-      else detrend<3>(id, size(c), s, t, r, sc, tc, g.hs, g.ht, rs);
+      if (g.size(c) < min_points) continue;
+      const double sc = g.s_centre(c), tc = g.t_centre(c);
+      double* rs = res.data() + from(c);
+      if (surface)
+        cell_quadratic_residuals<6>(g.points(c), g.size(c), s, t, r, sc, tc, g.hs(), g.ht(), rs);
+      else
+        cell_quadratic_residuals<3>(g.points(c), g.size(c), s, t, r, sc, tc, g.hs(), g.ht(), rs);
     }
   });
   // Robust noise: 1.4826 · median deviation of the detrended points within their branch.
   std::vector<double> all;
   all.reserve(n);
   for (int c = 0; c < cells; ++c)
-    if (size(c) >= min_points) {
-      const std::size_t from = static_cast<std::size_t>(start[static_cast<std::size_t>(c)]);
-      all.resize(all.size() + static_cast<std::size_t>(size(c)));
-      const double sc = g.s0 + (c / g.nt + 0.5) * g.hs, tc = g.t0 + (c % g.nt + 0.5) * g.ht;
-      const int* id = idx.data() + from;
-      double* dev = all.data() + all.size() - size(c);
+    if (g.size(c) >= min_points) {
+      all.resize(all.size() + static_cast<std::size_t>(g.size(c)));
+      const double sc = g.s_centre(c), tc = g.t_centre(c);
+      double* dev = all.data() + all.size() - g.size(c);
       if (surface)
-        within_branch_deviations<6>(id, size(c), res.data() + from, s, t, r, sc, tc, g.hs, g.ht, dev);
+        within_branch_deviations<6>(g.points(c), g.size(c), res.data() + from(c), s, t, r, sc, tc,
+                                    g.hs(), g.ht(), dev);
       else
-        within_branch_deviations<3>(id, size(c), res.data() + from, s, t, r, sc, tc, g.hs, g.ht, dev);
+        within_branch_deviations<3>(g.points(c), g.size(c), res.data() + from(c), s, t, r, sc, tc,
+                                    g.hs(), g.ht(), dev);
     }
   if (all.empty()) return out;
   std::nth_element(all.begin(), all.begin() + all.size() / 2, all.end());
@@ -247,10 +175,9 @@ SingleValuedness check_single_valued(const Eigen::VectorXd& s, const Eigen::Vect
 
   std::vector<CellFold> fold(static_cast<std::size_t>(cells));
   for (int c = 0; c < cells; ++c)
-    if (size(c) >= min_points)
-      fold[static_cast<std::size_t>(c)] =
-          branches(idx.data() + start[static_cast<std::size_t>(c)], size(c),
-                   res.data() + start[static_cast<std::size_t>(c)], s, t, r, surface, g.hs, g.ht, out.threshold);
+    if (g.size(c) >= min_points)
+      fold[static_cast<std::size_t>(c)] = branches(g.points(c), g.size(c), res.data() + from(c), s,
+                                                   t, r, surface, g.hs(), g.ht(), out.threshold);
   // Connected fold cells (4-neighbours) become regions.
   std::vector<int> label(static_cast<std::size_t>(cells), -1);
   for (int c0 = 0; c0 < cells; ++c0) {
@@ -263,15 +190,15 @@ SingleValuedness check_single_valued(const Eigen::VectorXd& s, const Eigen::Vect
     while (!stack.empty()) {
       const int c = stack.back();
       stack.pop_back();
-      const int i = c / g.nt, j = c % g.nt;
-      reg.s0 = std::min(reg.s0, g.s0 + i * g.hs), reg.s1 = std::max(reg.s1, g.s0 + (i + 1) * g.hs);
-      reg.t0 = std::min(reg.t0, g.t0 + j * g.ht), reg.t1 = std::max(reg.t1, g.t0 + (j + 1) * g.ht);
+      const int i = c / g.nt(), j = c % g.nt();
+      reg.s0 = std::min(reg.s0, g.s_start(i)), reg.s1 = std::max(reg.s1, g.s_start(i + 1));
+      reg.t0 = std::min(reg.t0, g.t_start(j)), reg.t1 = std::max(reg.t1, g.t_start(j + 1));
       reg.separation = std::max(reg.separation, fold[static_cast<std::size_t>(c)].separation);
-      reg.points += static_cast<std::size_t>(size(c));
+      reg.points += static_cast<std::size_t>(g.size(c));
       const int nb[4][2] = {{i - 1, j}, {i + 1, j}, {i, j - 1}, {i, j + 1}};
       for (const auto& q : nb) {
-        if (q[0] < 0 || q[0] >= g.ns || q[1] < 0 || q[1] >= g.nt) continue;
-        const int d = q[0] * g.nt + q[1];
+        if (q[0] < 0 || q[0] >= g.ns() || q[1] < 0 || q[1] >= g.nt()) continue;
+        const int d = q[0] * g.nt() + q[1];
         if (fold[static_cast<std::size_t>(d)].fold && label[static_cast<std::size_t>(d)] < 0) {
           label[static_cast<std::size_t>(d)] = label[static_cast<std::size_t>(c0)];
           stack.push_back(d);
@@ -300,13 +227,15 @@ std::string describe_folds(const SingleValuedness& check, const std::string& s_n
                            const std::string& t_name, double t_unit) {
   std::ostringstream o;
   o.precision(4);
-  for (std::size_t i = 0; i < check.folds.size(); ++i) {
+  const std::size_t listed = std::min(check.folds.size(), kListedFolds);
+  for (std::size_t i = 0; i < listed; ++i) {
     const FoldRegion& f = check.folds[i];
     if (i > 0) o << ", ";
     o << s_name << " in [" << f.s0 * s_unit << ", " << f.s1 * s_unit << "]";
     if (!t_name.empty()) o << " x " << t_name << " in [" << f.t0 * t_unit << ", " << f.t1 * t_unit << "]";
     o << " (branches " << f.separation << " apart)";
   }
+  if (check.folds.size() > listed) o << " … and " << check.folds.size() - listed << " more";
   return o.str();
 }
 

@@ -42,8 +42,12 @@ constexpr double kMaxRelativeScatter = 0.05;
 // kMaxRelativeScatter · check.typical_radius.
 void require_thin_data(const SingleValuedness& check, const std::string& fit);
 
-// "[a, b]" lists of the fold regions, the first coordinate scaled by s_unit (e.g. 180/π for
-// degrees) and labelled s_name; the second likewise when present.
+// How many fold regions describe_folds lists before it counts the rest.
+constexpr std::size_t kListedFolds = 3;
+
+// "[a, b]" lists of the first kListedFolds fold regions (then "… and N more"), the first
+// coordinate scaled by s_unit (e.g. 180/π for degrees) and labelled s_name; the second likewise
+// when present.
 std::string describe_folds(const SingleValuedness& check, const std::string& s_name, double s_unit,
                            const std::string& t_name = "", double t_unit = 1.0);
 

@@ -5,6 +5,8 @@
 
 #include "src/error.h"
 #include "src/fit/fit_pipeline.h"
+#include "src/fit/trimmed_fit.h"
+#include "src/number_text.h"
 #include "src/nurbs/symbolic_product.h"
 #include "src/units.h"
 
@@ -34,6 +36,16 @@ PoleReport pole_to_global(PoleReport p, const LocalFrame& f) {
   return p;
 }
 
+// The pole's distance from the data (polar angle `nearest`) and its measured normal spread judged.
+PoleCheck pole_check(PoleTreatment t, double nearest, const std::optional<PoleReport>& measured,
+                     double reach) {
+  PoleCheck c;
+  c.nearest_data = nearest;
+  c.extrapolated = t != PoleTreatment::none && nearest > reach;
+  c.creased = measured && measured->normal_spread > kMaxPoleNormalSpread;
+  return c;
+}
+
 }  // namespace
 
 // Bae 2002, §3.1 Steps 1-5 with §3.3 and §4.3.
@@ -52,7 +64,8 @@ SphericalFit fit_spherical(const Eigen::Matrix3Xd& points, const SphericalFitOpt
   SphericalCoordinates sc = spherical_coordinates(local, threads);
   const AzimuthRange range = azimuth_range(sc.theta, opt.closure, opt.closed_gap);
   unwrap_angles(sc.theta, range.start);
-  double phi0 = sc.phi.minCoeff(), phi1 = sc.phi.maxCoeff();
+  const double data_phi0 = sc.phi.minCoeff(), data_phi1 = sc.phi.maxCoeff();
+  double phi0 = data_phi0, phi1 = data_phi1;
   const PoleTreatment north = resolve(opt.north, phi0 <= opt.pole_reach);
   const PoleTreatment south = resolve(opt.south, phi1 >= std::numbers::pi - opt.pole_reach);
   if ((north == PoleTreatment::cap || south == PoleTreatment::cap) && !range.closed)
@@ -66,21 +79,28 @@ SphericalFit fit_spherical(const Eigen::Matrix3Xd& points, const SphericalFitOpt
   times.sync = clock.lap();
 
   SingleValuedness check;
+  const auto folds = [&] {
+    std::ostringstream msg;
+    msg.precision(6);
+    msg << "spherical fit: the data is not single-valued about the origin ("
+        << frame.frame.origin.transpose() << "): rays from it cross the data more than once at "
+        << describe_folds(check, "phi (deg)", kDegreesPerRadian, "theta (deg)", kDegreesPerRadian)
+        << "; noise " << check.noise
+        << ". Choose another centre, try the cylindrical fit, or use a general "
+        << "(parametric) surface fitter";
+    return InputError(msg.str());
+  };
   if (opt.check_single_valued) {
     check = check_single_valued(sc.phi, sc.theta, sc.rho, threads);
-    if (!check.single_valued) {
-      std::ostringstream msg;
-      msg.precision(6);
-      msg << "spherical fit: the data is not single-valued about the origin ("
-          << frame.frame.origin.transpose() << "): rays from it cross the data more than once at "
-          << describe_folds(check, "phi (deg)", kDegreesPerRadian, "theta (deg)", kDegreesPerRadian)
-          << "; noise " << check.noise
-          << ". Choose another centre, try the cylindrical fit, or use a general "
-          << "(parametric) surface fitter";
-      throw InputError(msg.str());
-    }
     require_thin_data(check, "spherical fit");
   }
+  OutlierReport outliers = settle_outliers(
+      opt.outliers, sc.phi, sc.theta, sc.rho, check, opt.check_single_valued, "spherical fit",
+      [&](Eigen::Index k) {
+        return "phi " + number_text(to_degrees(sc.phi[k])) + " deg, theta " +
+               number_text(degrees_in_turn(sc.theta[k])) + " deg";
+      },
+      folds, threads);
   times.check = clock.lap();
   progress(0.15);
 
@@ -98,11 +118,11 @@ SphericalFit fit_spherical(const Eigen::Matrix3Xd& points, const SphericalFitOpt
   const FunctionSpace space{base.meridian().curve().front(), base.meridian().curve().back(),
                             base.azimuth().curve().front(), base.azimuth().curve().back(),
                             range.closed, cap, pole_rows(north), pole_rows(south)};
-  std::size_t unconverged = 0;
-  const ErrorMeasure measure = distance_measure(
-      [&base](const BSplineSurface& F) { return ProductGeometry::spherical(F, base); }, local,
-      samples, threads, &unconverged);
-  FunctionFitResult fit = fit_function(samples, space, with_progress_range(opt.function, 0.15, 0.95), measure);
+  TrimmedFit trimmed = fit_trimmed(
+      samples, local, space, with_progress_range(opt.function, 0.15, 0.95),
+      [&base](const BSplineSurface& F) { return ProductGeometry::spherical(F, base); },
+      outliers.points);
+  FunctionFitResult& fit = trimmed.fit;
 
   // Step 5: S = F·B (3.5), caps, continuity, then global coordinates (4.6).
   clock.lap();
@@ -115,15 +135,32 @@ SphericalFit fit_spherical(const Eigen::Matrix3Xd& points, const SphericalFitOpt
   std::optional<PoleReport> north_pole, south_pole;
   if (pole_rows(north) > 0) north_pole = pole_to_global(pole_continuity(local_surface, true), frame.frame);
   if (pole_rows(south) > 0) south_pole = pole_to_global(pole_continuity(local_surface, false), frame.frame);
+  const PoleCheck north_check = pole_check(north, data_phi0, north_pole, opt.pole_reach);
+  const PoleCheck south_check =
+      pole_check(south, std::numbers::pi - data_phi1, south_pole, opt.pole_reach);
   NurbsSurface surface = frame.frame.to_global(local_surface);
   times.product = clock.lap();
   FitReport rep = make_report(fit, surface.degree_u(), surface.degree_v(), surface.size_u(),
-                              surface.size_v(), samples, threads, unconverged, times);
+                              surface.size_v(), trimmed.kept, threads, trimmed.unconverged, times);
+  rep.outliers = std::move(outliers);
   rep.times.total = total.lap();
   progress(1.0);
-  return SphericalFit{std::move(surface), std::move(north_cap), std::move(south_cap), std::move(fit.F),
-                      std::move(base), std::move(frame), range.closed, seam, north, south, north_pole, south_pole,
-                      std::move(check), std::move(rep)};
+  return SphericalFit{std::move(surface),
+                      std::move(north_cap),
+                      std::move(south_cap),
+                      std::move(fit.F),
+                      std::move(base),
+                      std::move(frame),
+                      range.closed,
+                      seam,
+                      north,
+                      south,
+                      north_pole,
+                      south_pole,
+                      north_check,
+                      south_check,
+                      std::move(check),
+                      std::move(rep)};
 }
 
 SphericalFit fit_spherical(const std::filesystem::path& file, const SphericalFitOptions& options,

@@ -3,7 +3,8 @@
 // ranges (3.3) → synchronization (φ, θ) → (u, v) → a single-valued F(u, v) of degree (p, q) →
 // S = F·B of degree (p+2, q+2) by the symbolic product (3.5) → back to global coordinates (4.6).
 // Closed in θ for full-azimuth data (periodic F, clipped, §3.3.1); poles closed by the simple G1
-// condition (3.14) or by a cap surface (§3.3.2). A true sphere gives degree (2, 2).
+// condition (3.14) or by a cap surface (§3.3.2); a closed pole far from the data, or one that
+// creases, is flagged. A true sphere gives degree (2, 2).
 #pragma once
 
 #include <Eigen/Core>
@@ -17,6 +18,7 @@
 #include "src/fit/function_fit.h"
 #include "src/fit/local_frame.h"
 #include "src/fit/orthogonal_coordinates.h"
+#include "src/fit/outliers.h"
 #include "src/fit/pole_cap.h"
 #include "src/fit/single_valued_check.h"
 #include "src/io/point_cloud.h"
@@ -44,6 +46,18 @@ struct SphericalFitOptions {
   PoleTreatment south = PoleTreatment::automatic;  // at φ = π
   double pole_reach = std::numbers::pi / 18;       // 10°: see PoleTreatment::automatic
   bool check_single_valued = true;
+  OutlierPolicy outliers = OutlierPolicy::refuse;
+};
+
+// A pole whose normals (3.12) spread by more than this about their mean creases: it has no
+// tangent plane (a G0 pole (3.14a) in general; G1 (3.14) and caps have one by construction).
+constexpr double kMaxPoleNormalSpread = std::numbers::pi / 180;  // 1°
+
+// What a closed pole rests on.
+struct PoleCheck {
+  double nearest_data = 0.0;  // polar angle (rad) from the pole to the nearest data point
+  bool extrapolated = false;  // closed (g0, g1, cap) with no data within pole_reach of the pole
+  bool creased = false;       // g0, g1: normal spread above kMaxPoleNormalSpread
 };
 
 struct SphericalFit {
@@ -56,12 +70,14 @@ struct SphericalFit {
   SeamReport seam;                           // closed fits
   PoleTreatment north = PoleTreatment::none, south = PoleTreatment::none;  // as applied
   std::optional<PoleReport> north_pole, south_pole;  // g0 / g1 poles, measured on the surface
+  PoleCheck north_check, south_check;
   SingleValuedness check;
   FitReport report;
 };
 
-// Throws InputError for bad input, a frame that cannot be estimated, a cap without a closed fit, or data that is not single-valued about the origin (naming the φ, θ ranges);
-// NumericalError when the tolerance cannot be met.
+// Throws InputError for bad input, a frame that cannot be estimated, a cap without a closed fit,
+// a few outliers (under refuse, with their count), or data that is not single-valued about the
+// origin (naming the φ, θ ranges); NumericalError when the tolerance cannot be met.
 SphericalFit fit_spherical(const Eigen::Matrix3Xd& points, const SphericalFitOptions& options = {});
 SphericalFit fit_spherical(const std::filesystem::path& file, const SphericalFitOptions& options = {},
                            const ReadOptions& read = {});

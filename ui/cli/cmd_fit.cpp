@@ -24,7 +24,7 @@ struct FitArgs {
   std::string method, closed, pole, degree, ctrl, tol, tol_measure, center, axis;
   std::string fairness, lambda, base;
   std::string threads = "2";
-  bool skip_bad = false, quiet = false, lenient = false;
+  bool skip_bad = false, reject_outliers = false, quiet = false, lenient = false;
 };
 
 // "X,Y,Z", or "X,Y" (Z = 0) where `planar_ok`.
@@ -78,6 +78,7 @@ FitJobOptions job_options(const FitArgs& a, FitJobOptions o) {
                                                                    : ArcKind::rqb;
   o.threads = parse_int_pair("--threads", a.threads, 1, 256).first;
   o.skip_bad = o.skip_bad || a.skip_bad;
+  o.reject_outliers = o.reject_outliers || a.reject_outliers;
   return o;
 }
 
@@ -105,6 +106,8 @@ void run(const FitArgs& a) {
   if (r.dropped > 0)
     std::cerr << "polarform: warning: " << r.dropped << " bad records skipped in "
               << scan.string() << "\n";
+  for (const std::string& w : r.warnings)
+    std::cerr << "polarform: warning: " << scan.string() << ": " << w << "\n";
   if (a.quiet) return;
   const FitReport& rep = r.report();
   std::printf("%s fit: %s\n", r.method.c_str(), r.reason.c_str());
@@ -117,6 +120,7 @@ void run(const FitArgs& a) {
         "points\n",
         rep.degree_u, rep.degree_v, rep.size_u, rep.size_v, rep.nurbs_degree_u, rep.nurbs_degree_v,
         rep.nurbs_size_u, rep.nurbs_size_v);
+  if (r.reject_outliers) std::printf("%s\n", outlier_summary(r).c_str());
   std::printf(
       "distance to the fit over %zu points: rms %.4g mm, p95 %.4g mm, p99 %.4g mm, max %.4g mm\n",
       rep.error.count, rep.error.rms, rep.error.p95, rep.error.p99, rep.error.max);
@@ -170,6 +174,9 @@ void add_fit_command(CLI::App& app) {
   cmd->add_option("--threads", args->threads, "worker threads (default 2)");
   cmd->add_flag("--skip-bad", args->skip_bad,
                 "skip unparsable or non-finite records instead of stopping");
+  cmd->add_flag("--reject-outliers", args->reject_outliers,
+                "leave points more than 8 robust σ off the fit out of it (trimmed least squares, "
+                "refitted until stable) instead of refusing a scan with a few");
   cmd->add_flag("--quiet,-q", args->quiet, "no progress bars and no summary");
   cmd->add_flag("--lenient", args->lenient, kLenientHelp);
   cmd->callback([args] { run(*args); });

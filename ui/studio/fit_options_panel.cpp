@@ -68,6 +68,11 @@ bool draw_fit_options(FitSettings& s) {
   static constexpr std::array<std::string_view, 5> kPoles = {"automatic", "none", "G0 point",
                                                              "G1 point", "cap surface"};
   changed |= combo("poles (spherical)", s.pole, kPoles);
+  changed |= ImGui::Checkbox("reject outliers", &s.reject_outliers);
+  help_marker(
+      "Points more than 8 robust σ off the fit are left out of it and the fit repeated until they "
+      "stay the same (as --reject-outliers of polarform fit). Unchecked, a cloud with a few such "
+      "points is refused with their count.");
   ImGui::PopItemWidth();
   changed |= optional_vector("frame origin [mm]", s.center, Eigen::Vector3d::Zero());
   changed |= optional_vector("frame axis k", s.axis, Eigen::Vector3d::UnitZ());

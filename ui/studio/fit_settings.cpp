@@ -17,6 +17,7 @@ FitSettings fit_settings(const FitProject& p) {
   s.center = p.center;
   s.axis = p.axis;
   s.skip_bad = p.skip_bad;
+  s.reject_outliers = p.reject_outliers;
   s.fairness = static_cast<int>(p.fairness);
   s.fairness_weight = p.fairness_weight;
   s.quartic_base = p.base == ArcKind::quartic;
@@ -39,6 +40,7 @@ FitProject fit_project(const FitSettings& s, const std::filesystem::path& scan) 
   p.center = s.center;
   p.axis = s.axis;
   p.skip_bad = s.skip_bad;
+  p.reject_outliers = s.reject_outliers;
   p.fairness = static_cast<FairnessOptions::Mode>(s.fairness);
   p.fairness_weight = s.fairness_weight;
   p.base = s.quartic_base ? ArcKind::quartic : ArcKind::rqb;

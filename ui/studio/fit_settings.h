@@ -1,8 +1,8 @@
 // The fit options of the fit workspace as its panel edits them — method (automatic, polar profile,
 // spherical, cylindrical), degrees, a tolerance or a fixed control net (both values kept while the
-// other is chosen), fairness, base arcs, closure, pole treatment and an optional frame origin and
-// axis instead of the estimated ones — and their exchange with fit projects
-// (jobs/project/fit_project.h), from which the fit job takes its options.
+// other is chosen), fairness, base arcs, closure, pole treatment, outlier rejection and an
+// optional frame origin and axis instead of the estimated ones — and their exchange with fit
+// projects (jobs/project/fit_project.h), from which the fit job takes its options.
 #pragma once
 
 #include <Eigen/Core>
@@ -30,6 +30,7 @@ struct FitSettings {
   // The local frame's origin and axis k, mm; unset: estimated from the cloud (Bae 2002, §4.3).
   std::optional<Eigen::Vector3d> center, axis;
   bool skip_bad = true;  // the studio always skips bad records (and says how many); kept for files
+  bool reject_outliers = false;  // leave outliers out of the fit instead of refusing the cloud
 
   bool operator==(const FitSettings&) const = default;
 };

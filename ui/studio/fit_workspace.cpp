@@ -136,6 +136,7 @@ void FitWorkspace::update() {
       fit_error_.clear();
       show_fit();
       log().info("Fit finished in " + number_text(fit_seconds_) + " s: " + fit_->result.reason);
+      for (const std::string& w : fit_->result.warnings) log().warning(w);
     } else if (outcome->cancelled) {
       log().info("Fit cancelled");
     } else if (outcome->error) {

@@ -1,6 +1,6 @@
 // The fit job's files: everything listed is written, report.json carries the documented fields
-// with sane values, deviation.ply holds one point per input point, and a broken scan stops the job
-// with an error naming its line before anything is written.
+// with sane values (poles, warnings, rejected outliers), deviation.ply holds one point per input
+// point, and a broken scan stops the job with an error naming its line before anything is written.
 #include <gtest/gtest.h>
 
 #include <set>
@@ -60,6 +60,48 @@ TEST(FitOutputs, SphereLikeExampleWritesEveryFileAndASaneReport) {
   const PointCloud deviation = read_point_cloud(dir / "deviation.ply");
   EXPECT_EQ(deviation.points.cols(), 3000);
   EXPECT_TRUE(deviation.points.isApprox(r.points, 0.0));
+
+  // Its default G0 poles: data within 4° of each, and normals that spread by more than 1° there
+  // (σ = 0.02 mm over 3000 points leaves F_u near the pole to the noise): creased, and said so.
+  for (const char* pole : {"north", "south"}) {
+    const auto& p = j["poles"][pole];
+    EXPECT_EQ(p["treatment"], "g0");
+    EXPECT_LT(p["nearest_data_deg"].get<double>(), 4.0);
+    EXPECT_EQ(p["extrapolated"], false);
+    EXPECT_GT(p["measured"]["normal_spread_deg"].get<double>(), 1.0);
+    EXPECT_EQ(p["measured"]["creased"], true);
+  }
+  ASSERT_EQ(j["warnings"].size(), 2u);
+  EXPECT_EQ(j["warnings"][0].get<std::string>().rfind(
+                "spherical fit: the north pole creases: its normals spread by ", 0),
+            0u);
+  EXPECT_EQ(j["warnings"], nlohmann::json(r.warnings));
+  EXPECT_FALSE(j.contains("outliers"));  // only with reject_outliers
+}
+
+TEST(FitOutputs, RejectedOutliersAreReported) {
+  Eigen::Matrix3Xd p = vase_cloud(6000, 0.02, 21);
+  for (Eigen::Index k = 0; k < 6000; k += 1500)  // four points 3 mm off the vase, radially
+    p.col(k).head<2>() *= 1 + 3.0 / p.col(k).head<2>().norm();
+  FitJobOptions o;
+  o.reject_outliers = true;
+  o.ctrl = std::pair{16, 16};
+  const FitJobResult r = run_fit_job(p, "vase.xyz", o);
+  const nlohmann::ordered_json j = fit_report_fields(r);
+  ASSERT_TRUE(j.contains("outliers"));
+  const auto& out = j["outliers"];
+  EXPECT_EQ(out["rejected"], 4);
+  EXPECT_EQ(out["threshold_sigma"], 8.0);
+  EXPECT_NEAR(out["sigma_mm"].get<double>(), 0.02, 0.004);
+  EXPECT_NEAR(out["threshold_mm"].get<double>(), 8 * out["sigma_mm"].get<double>(), 1e-12);
+  EXPECT_GT(out["largest_mm"].get<double>(), 1.0);
+  EXPECT_EQ(j["error_mm"]["count"], 5996);
+  EXPECT_NEAR(j["error_mm"]["rms"].get<double>(), 0.02, 0.002);
+  EXPECT_EQ(j["input"]["points"], 6000);
+  EXPECT_EQ(outlier_summary(r).rfind("Outliers: 4 of 6000 points rejected at > 8 σ (σ = ", 0), 0u)
+      << outlier_summary(r);
+  const std::string html = render_fit_outputs(r).at("report.html");
+  EXPECT_NE(html.find("Outliers: 4 of 6000 points rejected"), std::string::npos);
 }
 
 TEST(FitOutputs, PolarProfileWritesCurveFilesWithDxf) {

@@ -54,9 +54,11 @@ TEST(FitProject, EveryFieldRoundTripsExactly) {
   p.center = Eigen::Vector3d(1.0 / 3, -2e-17, 123456.789);
   p.axis = Eigen::Vector3d(0, 0.6, 0.8);
   p.skip_bad = true;
+  p.reject_outliers = true;
   p.fairness = FairnessOptions::Mode::fixed;
   p.fairness_weight = 1.0 / 7;
   p.base = ArcKind::quartic;
+  EXPECT_NE(fit_project_xml(p).find(" reject-outliers=\"true\""), std::string::npos);
   const FitProject back = parse(fit_project_xml(p));
   EXPECT_EQ(back, p);
   EXPECT_EQ(fit_project_xml(back), fit_project_xml(p));
@@ -87,6 +89,7 @@ TEST(FitProject, MinimalFileTakesTheDefaults) {
   EXPECT_FALSE(p.pole || p.degree || p.ctrl || p.tolerance || p.center || p.axis);
   EXPECT_EQ(p.measure, ToleranceMeasure::max);
   EXPECT_FALSE(p.skip_bad);
+  EXPECT_FALSE(p.reject_outliers);
   EXPECT_EQ(p.fairness, FairnessOptions::Mode::relative);
   EXPECT_EQ(p.fairness_weight, 1e-7);
   EXPECT_EQ(p.base, ArcKind::rqb);
@@ -118,6 +121,8 @@ TEST(FitProject, BadValuesNameLineAndAttribute) {
       {"scan=\"a.xyz\" axis=\"0,0,0\"", "non-zero direction"},
       {"scan=\"a.xyz\" axis=\"0,nan,1\"", "attribute 'axis'"},
       {"scan=\"a.xyz\" skip-bad=\"1\"", "attribute 'skip-bad'"},
+      {"scan=\"a.xyz\" reject-outliers=\"yes\"",
+       "fit.xml:2: <fit> attribute 'reject-outliers': expected one of true|false, got 'yes'"},
       {"scan=\"a.xyz\" fairness=\"smooth\"", "attribute 'fairness'"},
       {"scan=\"a.xyz\" lambda=\"0\"", "attribute 'lambda'"},
       {"scan=\"a.xyz\" lambda=\"inf\"", "attribute 'lambda'"},
@@ -150,6 +155,7 @@ TEST(FitProject, UnknownNamesAreErrorsOrLenientWarnings) {
   EXPECT_NE(error.find("fit.xml:2: unknown attribute 'colour' on <fit> (known here: "),
             std::string::npos)
       << error;
+  EXPECT_NE(error.find("reject-outliers"), std::string::npos) << error;  // a known name
   EXPECT_NE(error.find("fit.xml:3: unknown element <extra> in <fit> (none known here)"),
             std::string::npos)
       << error;

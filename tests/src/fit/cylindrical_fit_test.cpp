@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "src/error.h"
 #include "src/fit/membership.h"
@@ -147,6 +149,40 @@ TEST(RotationalFit, ChoosesTheMethodFromTheQuadricAndTheError) {
   const RotationalFit c = fit_rotational(m(test::cylindrical_cloud([](double, double) { return 9.0; }, 5000, 0, 30, 0, 2 * kPi, 34)), o);
   EXPECT_EQ(c.method(), FitMethod::cylindrical);
   EXPECT_EQ(c.surface().degree_u(), 1);
+}
+
+// Five gross outliers (±2 mm off the axis) of an exact waisted surface: refused with their count
+// and place (z, θ), or left out, when the fit is exactly that of the other points.
+TEST(CylindricalFit, GrossOutliersAreRefusedOrLeftOut) {
+  Eigen::Matrix3Xd p = test::cylindrical_cloud(
+      [](double z, double t) { return 20 + 2 * std::sin(z / 10) + std::cos(2 * t); }, 10005, 0, 60,
+      0, 2 * kPi, 35);
+  for (Eigen::Index k = 10000; k < 10005; ++k)
+    p.col(k).head<2>() *= 1 + (k % 2 ? 2.0 : -2.0) / p.col(k).head<2>().norm();
+  CylindricalFitOptions o;
+  o.frame.origin = Eigen::Vector3d::Zero();
+  o.frame.axis = Eigen::Vector3d::UnitZ();
+  o.frame.reference = Eigen::Vector3d::UnitX();  // else i follows the cloud's principal direction
+  try {
+    fit_cylindrical(p, o);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_EQ(m.rfind("cylindrical fit: 5 outliers of 10005 points at > 8 σ (σ = ", 0), 0u) << m;
+    EXPECT_NEAR(test::number_after(m, "; largest "), 2.0, 0.01) << m;
+    EXPECT_NE(m.find(" mm at z "), std::string::npos) << m;
+  }
+  o.outliers = OutlierPolicy::reject;
+  const CylindricalFit f = fit_cylindrical(p, o);
+  EXPECT_EQ(f.report.outliers.points,
+            (std::vector<Eigen::Index>{10000, 10001, 10002, 10003, 10004}));
+  EXPECT_EQ(f.report.error.count, 10000u);
+  for (Eigen::Index k = 10000; k < 10005; ++k)
+    EXPECT_NEAR(std::abs(f.report.signed_distance[k]), 2.0, 0.1);
+  o.outliers = OutlierPolicy::refuse;
+  const CylindricalFit rest = fit_cylindrical(Eigen::Matrix3Xd(p.leftCols(10000)), o);
+  EXPECT_LT((rest.F.coefs() - f.F.coefs()).cwiseAbs().maxCoeff(), 1e-9);
+  EXPECT_EQ(f.report.error.max, rest.report.error.max);
 }
 
 // A tube: an outer and a concentric inner wall, both everywhere — refused as not single-valued.

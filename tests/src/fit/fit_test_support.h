@@ -1,5 +1,6 @@
-// Shared generators for the fitter tests: rigid motions, Gaussian noise, and point clouds sampled
-// from known shapes (spheres, cylinders, surfaces of revolution, rotational freeform shapes).
+// Shared helpers of the fitter tests: rigid motions, Gaussian noise, point clouds sampled from
+// known shapes (spheres, cylinders, surfaces of revolution, rotational freeform shapes), and the
+// numbers in a message.
 #pragma once
 
 #include <Eigen/Core>
@@ -21,6 +22,12 @@ inline std::string sci(double x) {
   o.precision(3);
   o << std::scientific << x;
   return o.str();
+}
+
+// The number written after `key` in a message (NaN when the key is missing).
+inline double number_after(const std::string& message, const std::string& key) {
+  const std::size_t at = message.find(key);
+  return at == std::string::npos ? std::nan("") : std::stod(message.substr(at + key.size()));
 }
 
 struct Rigid {

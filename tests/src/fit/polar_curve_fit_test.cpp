@@ -200,6 +200,141 @@ TEST(PolarCurveFit, ConcentricBranchesEverywhereAreAFold) {
   EXPECT_NEAR(one.noise, sigma, 0.3 * sigma);
 }
 
+// A cam-like contour with a bore is two loops, named with their radii (not dozens of angle ranges).
+TEST(PolarCurveFit, AContourWithABoreIsTwoLoops) {
+  const Eigen::Matrix2Xd outer = polar_points([](double t) { return 40 + 0.5 * std::cos(3 * t); },
+                                              3600, 0.0, 2 * kPi, {5, 7}, 0.005, 31);
+  const Eigen::Matrix2Xd bore =
+      polar_points([](double) { return 12.0; }, 400, 0.0, 2 * kPi, {5, 7}, 0.005, 32);
+  Eigen::Matrix2Xd all(2, outer.cols() + bore.cols());
+  all << outer, bore;
+  PolarFitOptions o;
+  o.centre = Eigen::Vector2d(5, 7);
+  try {
+    fit_polar_curve(all, o);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "polar curve fit: two loops found (radii about 40 mm and 12 mm around the centre): "
+              "use scan-cam, or remove the inner loop");
+  }
+}
+
+// Fold regions beyond the third are counted, not listed: ten short second branches.
+TEST(PolarCurveFit, ListsAtMostThreeFolds) {
+  Eigen::Matrix2Xd all =
+      polar_points([](double) { return 10.0; }, 6000, 0.0, 2 * kPi, {0, 0}, 0.0, 33);
+  for (int b = 0; b < 10; ++b) {
+    const Eigen::Matrix2Xd branch = polar_points([](double) { return 13.0; }, 100, 0.5 * b + 0.1,
+                                                 0.5 * b + 0.3, {0, 0}, 0.0, 40 + b);
+    all.conservativeResize(2, all.cols() + branch.cols());
+    all.rightCols(branch.cols()) = branch;
+  }
+  PolarFitOptions o;
+  o.centre = Eigen::Vector2d::Zero();
+  try {
+    fit_polar_curve(all, o);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    std::size_t listed = 0;
+    for (std::size_t at = m.find("theta (deg) in ["); at != std::string::npos;
+         at = m.find("theta (deg) in [", at + 1))
+      ++listed;
+    EXPECT_EQ(listed, 3u) << m;
+    EXPECT_NE(m.find(" … and 7 more; noise "), std::string::npos) << m;
+  }
+}
+
+// r(θ) = 40 + 3 cos 3θ about the origin with radial noise σ = 0.01 at 3000 random angles, then five
+// points moved radially by ±5 mm (alternately) at angles of their own: the last five columns.
+Eigen::Matrix2Xd profile_with_outliers(unsigned seed, int outliers = 5) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> T(0, 2 * kPi);
+  std::normal_distribution<double> N(0, 0.01);
+  Eigen::Matrix2Xd p(2, 3000 + outliers);
+  for (Eigen::Index k = 0; k < p.cols(); ++k) {
+    const double t = T(rng);
+    const double r = 40 + 3 * std::cos(3 * t) + (k < 3000 ? N(rng) : k % 2 ? 5.0 : -5.0);
+    p.col(k) << r * std::cos(t), r * std::sin(t);
+  }
+  return p;
+}
+
+// A few gross outliers are counted, not called folds (with seed 3 they make two branches in a cell,
+// with the others they would have pulled the fit): the message says how many and how far.
+TEST(PolarCurveFit, AFewGrossOutliersAreCountedNotFitted) {
+  PolarFitOptions o;
+  o.centre = Eigen::Vector2d::Zero();
+  for (unsigned seed : {1u, 2u, 3u, 4u}) {
+    const Eigen::Matrix2Xd p = profile_with_outliers(seed);
+    try {
+      fit_polar_curve(p, o);
+      FAIL() << "expected InputError, seed " << seed;
+    } catch (const InputError& e) {
+      const std::string m = e.what();
+      EXPECT_EQ(m.rfind("polar curve fit: 5 outliers of 3005 points at > 8 σ (σ = 0.00", 0), 0u)
+          << m;
+      EXPECT_NEAR(test::number_after(m, "; largest "), 5.0, 0.05) << m;
+      EXPECT_NE(m.find(" deg): rerun with --reject-outliers"), std::string::npos) << m;
+      EXPECT_EQ(m.find("not single-valued"), std::string::npos) << m;
+    }
+  }
+  const SingleValuedness c =
+      check_single_valued(polar_coordinates(profile_with_outliers(3)).theta, Eigen::VectorXd(),
+                          polar_coordinates(profile_with_outliers(3)).r);
+  EXPECT_FALSE(c.single_valued);  // seed 3: refused as not single-valued before
+}
+
+// Rejected, the outliers leave the fit that of the other points exactly; the distances of those
+// points are at the noise level, the outliers' are their offsets along the normal.
+TEST(PolarCurveFit, RejectedOutliersLeaveTheFitOfTheRest) {
+  PolarFitOptions o;
+  o.centre = Eigen::Vector2d::Zero();
+  o.function.size_v = 24;
+  o.outliers = OutlierPolicy::reject;
+  for (unsigned seed : {1u, 3u}) {
+    const Eigen::Matrix2Xd p = profile_with_outliers(seed);
+    const PolarCurveFit f = fit_polar_curve(p, o);
+    const OutlierReport& out = f.report.outliers;
+    EXPECT_EQ(out.count, 5u);
+    EXPECT_EQ(out.points, (std::vector<Eigen::Index>{3000, 3001, 3002, 3003, 3004}));
+    EXPECT_NEAR(out.scale, 0.01, 0.0015);
+    EXPECT_NEAR(out.largest, 5.0, 0.05);
+    EXPECT_EQ(f.report.error.count, 3000u);
+    EXPECT_NEAR(f.report.error.rms, 0.01, 0.001);
+    RecordProperty("inlier_rms_over_sigma_" + std::to_string(seed),
+                   test::sci(f.report.error.rms / 0.01));
+    ASSERT_EQ(f.report.signed_distance.size(), 3005);
+    EXPECT_LT(f.report.signed_distance.head(3000).cwiseAbs().maxCoeff(), 0.05);
+    for (Eigen::Index k = 3000; k < 3005; ++k) {
+      EXPECT_GT(std::abs(f.report.signed_distance[k]), 4.8) << k;  // 5 mm along rays, slope < 13°
+      EXPECT_LT(std::abs(f.report.signed_distance[k]), 5.01) << k;
+      EXPECT_EQ(f.report.signed_distance[k] > 0, k % 2 == 1) << k;
+    }
+    // The fit of the 3000 points alone, with every option else the same.
+    PolarFitOptions plain = o;
+    plain.outliers = OutlierPolicy::refuse;
+    const PolarCurveFit rest = fit_polar_curve(Eigen::Matrix2Xd(p.leftCols(3000)), plain);
+    EXPECT_LT((rest.F.values() - f.F.values()).cwiseAbs().maxCoeff(), 1e-9);
+  }
+}
+
+// On clean data --reject-outliers rejects nothing and changes nothing.
+TEST(PolarCurveFit, RejectingOnCleanDataChangesNothing) {
+  const Eigen::Matrix2Xd p = profile_with_outliers(5, 0);
+  PolarFitOptions o;
+  o.function.size_v = 24;
+  const PolarCurveFit plain = fit_polar_curve(p, o);
+  o.outliers = OutlierPolicy::reject;
+  const PolarCurveFit robust = fit_polar_curve(p, o);
+  EXPECT_EQ(robust.report.outliers.count, 0u);
+  EXPECT_EQ(robust.F.values(), plain.F.values());
+  EXPECT_EQ(robust.report.signed_distance, plain.report.signed_distance);
+  EXPECT_EQ(robust.report.error.rms, plain.report.error.rms);
+  EXPECT_NEAR(plain.report.error.rms, 0.01, 0.001);
+}
+
 TEST(PolarCurveFit, SliceOfACylinderIsACircleInSpace) {
   Eigen::Matrix3Xd p = test::cylindrical_cloud([](double, double) { return 6.0; }, 20000, -5, 5, 0, 2 * kPi, 8);
   const test::Rigid m = test::random_rigid(9);

@@ -3,17 +3,18 @@
 // error at the noise level and a surface far closer to the truth than the noise; closed fits are
 // seamless; G1 poles and caps collapse to one point with one tangent plane; a rigidly moved cloud
 // gives the rigidly moved surface; rays that cross the data twice are refused.
-#include <gtest/gtest.h>
+#include "src/fit/spherical_fit.h"
 
-#include <random>
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <string>
+#include <vector>
 
 #include "src/error.h"
 #include "src/fit/membership.h"
-#include "src/fit/spherical_fit.h"
 #include "src/nurbs/point_inversion.h"
 #include "tests/src/fit/fit_test_support.h"
 
@@ -222,6 +223,119 @@ TEST(SphericalFit, PoleCapsCloseTheHolesWithTheirOwnTangentPlanes) {
   }
   EXPECT_GT(f.north_cap->point.z(), 25.0);
   EXPECT_LT(f.south_cap->point.z(), -25.0);
+}
+
+// The largest angle between the normals S_u × S_v on the ring u = u_b ± δ (δ = 1e-7 of the
+// u range) at 3600 values of v and their mean: as δ → 0, the spread of the tangent planes that
+// meet at the pole, found without the normals (3.12) the fit measures.
+double ring_normal_spread(const NurbsSurface& s, bool north) {
+  const double du = 1e-7 * (s.back_u() - s.front_u());
+  const double u = north ? s.front_u() + du : s.back_u() - du;
+  std::vector<Eigen::Vector3d> normals;
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (int a = 0; a < 3600; ++a) {
+    const double v = s.front_v() + (s.back_v() - s.front_v()) * a / 3600.0;
+    const NurbsSurface::Points d = s.derivatives(u, v, 1);
+    normals.push_back(d[2].cross(d[1]).normalized());  // index k·2 + l: S_u = [2], S_v = [1]
+    mean += normals.back();
+  }
+  mean.normalize();
+  double spread = 0.0;
+  for (const Eigen::Vector3d& n : normals)
+    spread = std::max(spread, std::atan2(n.cross(mean).norm(), n.dot(mean)));
+  return spread;
+}
+
+// A noisy sphere-like scan (3000 points, σ = 0.02 mm) with its poles closed by the default G0
+// condition (3.14a): near the pole F_u varies with θ as the noise has it, so the tangent planes
+// there do not meet in one: the pole creases, by the spread the ring of normals shows too. G1
+// poles (3.14) do not.
+TEST(SphericalFit, AG0PoleThatCreasesIsFlaggedWithItsSpread) {
+  Eigen::Matrix3Xd p = test::spherical_cloud(lobed, 3000, 0, kPi, 0, 2 * kPi, 3);
+  test::add_noise(p, 0.02, 4);
+  SphericalFitOptions o;
+  o.frame.origin = Eigen::Vector3d::Zero();
+  o.frame.axis = Eigen::Vector3d::UnitZ();
+  const SphericalFit f = fit_spherical(p, o);
+  ASSERT_EQ(f.north, PoleTreatment::g0);
+  ASSERT_EQ(f.south, PoleTreatment::g0);
+  for (bool north : {true, false}) {
+    const PoleReport& pole = north ? *f.north_pole : *f.south_pole;
+    const PoleCheck& check = north ? f.north_check : f.south_check;
+    const double ring = ring_normal_spread(f.surface, north);
+    RecordProperty(std::string(north ? "north" : "south") + "_spread_deg",
+                   test::sci(pole.normal_spread * 180 / kPi));
+    EXPECT_NEAR(pole.normal_spread, ring, 0.01 * ring);  // 201 samples of v against 3600
+    EXPECT_GT(pole.normal_spread, 2 * kMaxPoleNormalSpread);
+    EXPECT_TRUE(check.creased);
+    EXPECT_FALSE(check.extrapolated);
+    EXPECT_LT(check.nearest_data, 4 * kPi / 180);
+  }
+  o.north = o.south = PoleTreatment::g1;
+  const SphericalFit g1 = fit_spherical(p, o);
+  EXPECT_LT(ring_normal_spread(g1.surface, true), 1e-5);
+  EXPECT_FALSE(g1.north_check.creased);
+  EXPECT_FALSE(g1.south_check.creased);
+}
+
+// A pole closed (G1, or a cap) over a hole of 20° of polar angle is extrapolated: no data within
+// pole_reach (10°); the same shape scanned to the poles is not, and an open pole never is.
+TEST(SphericalFit, APoleClosedOverAHoleIsExtrapolated) {
+  const Eigen::Matrix3Xd gap = test::spherical_cloud(lobed, 20000, 0.35, kPi, 0, 2 * kPi, 5);
+  SphericalFitOptions o;
+  o.frame.origin = Eigen::Vector3d::Zero();
+  o.frame.axis = Eigen::Vector3d::UnitZ();
+  const SphericalFit open = fit_spherical(gap, o);  // automatic: none at the north pole
+  EXPECT_EQ(open.north, PoleTreatment::none);
+  EXPECT_FALSE(open.north_check.extrapolated);
+  EXPECT_NEAR(open.north_check.nearest_data, 0.35, 2e-3);
+  for (PoleTreatment t : {PoleTreatment::g1, PoleTreatment::cap}) {
+    o.north = t;
+    const SphericalFit f = fit_spherical(gap, o);
+    EXPECT_TRUE(f.north_check.extrapolated);
+    EXPECT_GE(f.north_check.nearest_data, 0.35);
+    EXPECT_NEAR(f.north_check.nearest_data, 0.35, 2e-3);
+    EXPECT_FALSE(f.south_check.extrapolated);  // data within 1° of the south pole
+    EXPECT_LT(f.south_check.nearest_data, kPi / 180);
+  }
+  o.north = o.south = PoleTreatment::g1;
+  const SphericalFit full =
+      fit_spherical(test::spherical_cloud(lobed, 20000, 0, kPi, 0, 2 * kPi, 6), o);
+  EXPECT_FALSE(full.north_check.extrapolated);
+  EXPECT_FALSE(full.south_check.extrapolated);
+}
+
+// Five gross outliers (±3 mm along their rays) of a noisy lobed body: refused with their count,
+// or left out, when the fit is that of the other points.
+TEST(SphericalFit, GrossOutliersAreRefusedOrLeftOut) {
+  Eigen::Matrix3Xd p = test::spherical_cloud(lobed, 20005, 0, kPi, 0, 2 * kPi, 7);
+  test::add_noise(p, 0.02, 8);
+  for (Eigen::Index k = 20000; k < 20005; ++k)
+    p.col(k) *= 1 + (k % 2 ? 3.0 : -3.0) / p.col(k).norm();
+  SphericalFitOptions o;
+  o.frame.origin = Eigen::Vector3d::Zero();
+  o.frame.axis = Eigen::Vector3d::UnitZ();
+  o.frame.reference = Eigen::Vector3d::UnitX();  // else i follows the cloud's principal direction
+  o.function.size_u = o.function.size_v = 16;
+  try {
+    fit_spherical(p, o);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_EQ(m.rfind("spherical fit: 5 outliers of 20005 points at > 8 σ (σ = 0.0", 0), 0u) << m;
+    EXPECT_NEAR(test::number_after(m, "; largest "), 3.0, 0.1) << m;
+    EXPECT_NE(m.find(" deg, theta "), std::string::npos) << m;
+  }
+  o.outliers = OutlierPolicy::reject;
+  const SphericalFit f = fit_spherical(p, o);
+  EXPECT_EQ(f.report.outliers.points,
+            (std::vector<Eigen::Index>{20000, 20001, 20002, 20003, 20004}));
+  EXPECT_EQ(f.report.error.count, 20000u);
+  EXPECT_NEAR(f.report.error.rms, 0.02, 0.005);  // σ, and the 16 x 16 net's shortfall
+  o.outliers = OutlierPolicy::refuse;
+  const SphericalFit rest = fit_spherical(Eigen::Matrix3Xd(p.leftCols(20000)), o);
+  EXPECT_LT((rest.F.coefs() - f.F.coefs()).cwiseAbs().maxCoeff(), 1e-9);
+  EXPECT_EQ(f.report.error.rms, rest.report.error.rms);
 }
 
 TEST(SphericalFit, RigidlyMovedCloudGivesTheRigidlyMovedSurface) {

@@ -1,11 +1,16 @@
 // The polarform binary on the fit-family commands: exit code 0 and the outputs on the bundled
-// examples, exit code 2 with one error line naming the line on a broken scan, and no files then.
+// examples, exit code 2 with one error line naming the line on a broken scan, and no files then;
+// a profile with its bore named as two loops, outliers refused or rejected, a pole warned about.
 #include <gtest/gtest.h>
-
 #include <sys/wait.h>
 
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
+#include <random>
 #include <set>
 #include <sstream>
 #include <string>
@@ -23,19 +28,39 @@ using test::write_text;
 
 struct Outcome {
   int code;
-  std::string err;
+  std::string err, out;
 };
 
-// Runs polarform with `args` (shell words), stderr captured into a file of the scratch dir.
-Outcome polarform(const std::string& args, const std::filesystem::path& dir) {
-  const auto err = dir / "stderr.txt";
-  const std::string cmd = std::string(POLARFORM_BINARY_DIR) + "/ui/cli/polarform " + args +
-                          " >/dev/null 2>" + err.string();
-  const int status = std::system(cmd.c_str());
-  std::ifstream in(err);
+std::string slurp(const std::filesystem::path& file) {
+  std::ifstream in(file);
   std::stringstream text;
   text << in.rdbuf();
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
+  return text.str();
+}
+
+// Runs polarform with `args` (shell words), stderr (and stdout, when asked) captured into files
+// of the scratch dir.
+Outcome polarform(const std::string& args, const std::filesystem::path& dir,
+                  bool stdout_too = false) {
+  const auto err = dir / "stderr.txt", out = dir / "stdout.txt";
+  const std::string cmd = std::string(POLARFORM_BINARY_DIR) + "/ui/cli/polarform " + args + " >" +
+                          (stdout_too ? out.string() : "/dev/null") + " 2>" + err.string();
+  const int status = std::system(cmd.c_str());
+  Outcome r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(err), ""};
+  if (stdout_too) {
+    r.out = slurp(out);
+    std::filesystem::remove(out);
+  }
+  return r;
+}
+
+// "x y z" lines of the points.
+std::string xyz_text(const Eigen::Matrix3Xd& p) {
+  std::ostringstream text;
+  text.precision(10);
+  for (Eigen::Index k = 0; k < p.cols(); ++k)
+    text << p(0, k) << " " << p(1, k) << " " << p(2, k) << "\n";
+  return text.str();
 }
 
 TEST(Cli, FitVizAndScanCamSucceedOnTheExamples) {
@@ -201,6 +226,116 @@ TEST(Cli, BrokenScanExitsTwoNamingTheLineAndWritesNothing) {
                 dir);
   EXPECT_EQ(grid.code, 2);
   EXPECT_NE(grid.err.find("g.csv:2:"), std::string::npos) << grid.err;
+}
+
+// The bundled cam scan with its bore is two loops: one line on stderr says so, with the radii.
+TEST(Cli, FitNamesTheTwoLoopsOfAProfileWithItsBore) {
+  const auto dir = scratch_dir();
+  const std::string scan = example("scans/cam_profile.xyz");
+  const Outcome r = polarform("fit " + scan + " --out " + (dir / "cam").string(), dir);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(r.err, "polarform: error: " + scan +
+                       ": polar curve fit: two loops found (radius about 50 mm around the centre, "
+                       "radius about 8 mm around (12.5, -7.25)): use scan-cam, or remove the "
+                       "inner loop\n");
+  EXPECT_FALSE(std::filesystem::exists(dir / "cam"));
+}
+
+// A profile scan (r = 30 + 2 cos 3θ, σ = 0.01 mm) with five points 4 mm off: refused with their
+// count; with --reject-outliers (or the project's reject-outliers="true") fitted without them,
+// the summary and report.json saying how many at what threshold.
+TEST(Cli, FitRefusesAFewOutliersAndRejectsThemWhenAsked) {
+  const auto dir = scratch_dir();
+  std::mt19937 rng(12);
+  std::uniform_real_distribution<double> T(0, 2 * 3.141592653589793);
+  std::normal_distribution<double> N(0, 0.01);
+  Eigen::Matrix3Xd p(3, 3005);
+  for (Eigen::Index k = 0; k < p.cols(); ++k) {
+    const double t = T(rng), r = 30 + 2 * std::cos(3 * t) +
+                                 (k < 3000 ? N(rng)
+                                  : k % 2  ? 4.0
+                                           : -4.0);
+    p.col(k) << r * std::cos(t), r * std::sin(t), 0.0;
+  }
+  const std::string scan = write_text(dir / "spiky.xyz", xyz_text(p)).string();
+  const Outcome refused = polarform("fit " + scan + " --out " + (dir / "a").string(), dir);
+  EXPECT_EQ(refused.code, 2);
+  EXPECT_EQ(refused.err.rfind("polarform: error: " + scan +
+                                  ": polar curve fit: 5 outliers of 3005 points at > 8 σ (σ = ",
+                              0),
+            0u)
+      << refused.err;
+  EXPECT_NE(refused.err.find("): rerun with --reject-outliers\n"), std::string::npos)
+      << refused.err;
+  EXPECT_EQ(std::count(refused.err.begin(), refused.err.end(), '\n'), 1);
+  EXPECT_FALSE(std::filesystem::exists(dir / "a"));
+
+  const Outcome fitted = polarform(
+      "fit " + scan + " --reject-outliers --ctrl 24 --out " + (dir / "b").string(), dir, true);
+  ASSERT_EQ(fitted.code, 0) << fitted.err;
+  EXPECT_EQ(fitted.err, "");
+  EXPECT_NE(fitted.out.find("\nOutliers: 5 of 3005 points rejected at > 8 σ (σ = 0.0"),
+            std::string::npos)
+      << fitted.out;
+  EXPECT_NE(fitted.out.find("the distances are of the 3000 points kept.\ndistance to the fit over "
+                            "3000 points: rms "),
+            std::string::npos)
+      << fitted.out;
+  const nlohmann::json report = read_json(dir / "b/report.json");
+  EXPECT_EQ(report["outliers"]["rejected"], 5);
+  EXPECT_EQ(report["outliers"]["threshold_sigma"], 8.0);
+  EXPECT_NEAR(report["outliers"]["sigma_mm"].get<double>(), 0.01, 0.0015);
+  EXPECT_NEAR(report["outliers"]["largest_mm"].get<double>(), 4.0, 0.05);
+  EXPECT_EQ(report["error_mm"]["count"], 3000);
+  EXPECT_NEAR(report["error_mm"]["rms"].get<double>(), 0.01, 0.001);
+  EXPECT_EQ(report["warnings"], nlohmann::json::array());
+
+  write_text(dir / "fit.xml",
+             "<polarform version=\"1\"><fit scan=\"spiky.xyz\" "
+             "reject-outliers=\"true\"/></polarform>\n");
+  ASSERT_EQ(
+      polarform("fit " + (dir / "fit.xml").string() + " -q --out " + (dir / "c").string(), dir)
+          .code,
+      0);
+  EXPECT_EQ(read_json(dir / "c/report.json")["outliers"]["rejected"], 5);
+
+  const Outcome help = polarform("fit --help", dir, true);
+  EXPECT_NE(help.out.find("--reject-outliers"), std::string::npos) << help.out;
+}
+
+// A G1 pole closed over a 25° hole rests on no data: a warning on stderr (also with -q) and in
+// report.json; scanned to the poles, none.
+TEST(Cli, FitWarnsAboutAnExtrapolatedPole) {
+  const auto dir = scratch_dir();
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> C(-1.0, std::cos(25 * 3.141592653589793 / 180)),
+      T(0, 2 * 3.141592653589793);
+  Eigen::Matrix3Xd p(3, 4000);
+  for (Eigen::Index k = 0; k < p.cols(); ++k) {
+    const double c = C(rng), s = std::sqrt(1 - c * c), t = T(rng);
+    p.col(k) << 25 * s * std::cos(t), 25 * s * std::sin(t), 25 * c;
+  }
+  const std::string scan = write_text(dir / "gap.xyz", xyz_text(p)).string();
+  const Outcome r = polarform("fit " + scan +
+                                  " --method spherical --pole g1 --center 0,0,0 "
+                                  "--axis 0,0,1 -q --out " +
+                                  (dir / "gap").string(),
+                              dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err.rfind("polarform: warning: " + scan +
+                            ": spherical fit: the north pole is extrapolated: no data within 10° "
+                            "of it (the nearest point is 25.",
+                        0),
+            0u)
+      << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1);
+  const nlohmann::json report = read_json(dir / "gap/report.json");
+  EXPECT_EQ(report["poles"]["north"]["extrapolated"], true);
+  EXPECT_NEAR(report["poles"]["north"]["nearest_data_deg"].get<double>(), 25.0, 0.2);
+  EXPECT_EQ(report["poles"]["south"]["extrapolated"], false);
+  ASSERT_EQ(report["warnings"].size(), 1u);
+  EXPECT_EQ("polarform: warning: " + scan + ": " + report["warnings"][0].get<std::string>() + "\n",
+            r.err);
 }
 
 TEST(Cli, BadOptionsExitTwo) {

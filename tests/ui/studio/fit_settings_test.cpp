@@ -40,12 +40,15 @@ TEST(FitSettings, ProjectFieldsRoundTrip) {
   EXPECT_EQ(round_trip(FitSettings{}), FitSettings{});
 }
 
-TEST(FitSettings, FrameOverridesAndSkipBadRoundTrip) {
+TEST(FitSettings, FrameOverridesSkipBadAndRejectOutliersRoundTrip) {
   FitSettings s;
   s.center = Eigen::Vector3d(1.5, -2, 3.25);
   s.axis = Eigen::Vector3d(0, 0.6, 0.8);
   s.skip_bad = false;
   EXPECT_EQ(round_trip(s), s);
+  s.reject_outliers = true;
+  EXPECT_EQ(round_trip(s), s);
+  EXPECT_TRUE(fit_job_options(fit_project(s, "a.xyz")).reject_outliers);
 }
 
 TEST(FitSettings, EveryMethodRoundTrips) {

@@ -1,0 +1,32 @@
+// Fitting F without some points (the outliers OutlierPolicy::reject leaves out): trimmed least
+// squares (Rousseeuw & Leroy 1987, §1.2) — F is fitted to the points kept, and the true distance
+// of every point, those left out included, is measured from the result. With no point left out it
+// is the plain fit, unchanged.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <functional>
+#include <vector>
+
+#include "src/fit/function_fit.h"
+#include "src/fit/product_geometry.h"
+
+namespace polarform {
+
+// The geometry S = F·B of a fitted F (it refers to F, which must outlive it).
+using GeometryOf = std::function<ProductGeometry(const BSplineSurface&)>;
+
+struct TrimmedFit {
+  FunctionFitResult fit;        // errors: every point's signed distance; stats: the kept points'
+  Samples kept;                 // the samples fitted
+  std::size_t unconverged = 0;  // foot points (of all points) that hit their iteration limit
+};
+
+// Fits the samples (one per column of `local`, the points in the geometry's frame) but those
+// listed in `leave_out` (increasing indices).
+TrimmedFit fit_trimmed(const Samples& samples, const Eigen::Matrix3Xd& local,
+                       const FunctionSpace& space, const FunctionFitOptions& options,
+                       const GeometryOf& geometry, const std::vector<Eigen::Index>& leave_out);
+
+}  // namespace polarform
