@@ -108,10 +108,12 @@ void half_law(MotionLaw law, double x, double* o) {
     case MotionLaw::Polynomial345:
     case MotionLaw::Polynomial4567: return law_polynomial(law).derivatives(x, 4, o);
     case MotionLaw::Polynomial:
-    case MotionLaw::BSpline: break;
+    case MotionLaw::BSpline:
+    case MotionLaw::Scca: break;
   }
   throw InputError("motion law '" + std::string(motion_law_name(law)) +
-                   "' has no normalised closed form; it is synthesised from endpoint constraints");
+                   "' has no fixed normalised form: it is synthesised from endpoint constraints or "
+                   "takes parameters (scca_law.h)");
 }
 
 }  // namespace
