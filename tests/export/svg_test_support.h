@@ -15,43 +15,13 @@
 
 #include "export/nice_ticks.h"
 #include "export/polyline_path.h"
+#include "tests/support/export/svg_elements.h"
 
 namespace polarform::test {
-
-using tinyxml2::XMLElement;
-
-// All elements below root (inclusive) whose class list contains cls.
-inline std::vector<const XMLElement*> by_class(const XMLElement* root, const std::string& cls) {
-  std::vector<const XMLElement*> found;
-  std::function<void(const XMLElement*)> visit = [&](const XMLElement* e) {
-    if (const char* c = e->Attribute("class")) {
-      std::istringstream words(c);
-      for (std::string w; words >> w;)
-        if (w == cls) found.push_back(e);
-    }
-    for (const XMLElement* child = e->FirstChildElement(); child;
-         child = child->NextSiblingElement())
-      visit(child);
-  };
-  visit(root);
-  return found;
-}
 
 inline PixelRect area_of(const XMLElement* rect) {
   const double x = rect->DoubleAttribute("x"), y = rect->DoubleAttribute("y");
   return {x, y, x + rect->DoubleAttribute("width"), y + rect->DoubleAttribute("height")};
-}
-
-// The subpaths of path data made of M and L commands with absolute coordinates.
-inline std::vector<Polyline> subpaths(const std::string& d) {
-  std::vector<Polyline> pieces;
-  static const std::regex command(R"(([ML])(-?[0-9.]+) (-?[0-9.]+))");
-  for (auto it = std::sregex_iterator(d.begin(), d.end(), command); it != std::sregex_iterator();
-       ++it) {
-    if ((*it)[1] == "M") pieces.emplace_back();
-    pieces.back().push_back({std::stod((*it)[2]), std::stod((*it)[3])});
-  }
-  return pieces;
 }
 
 // A tick label as a number: "−0.5", "100", "10⁻³", "2×10⁻⁷"; a factor "×10⁶" multiplies.

@@ -16,6 +16,22 @@ namespace polarform::test {
 
 constexpr double kPi = std::numbers::pi;
 
+// n points of r(θ) about `centre` at random θ in [t0, t1], with normal noise σ per coordinate.
+inline Eigen::Matrix2Xd polar_points(const std::function<double(double)>& r, int n, double t0,
+                                     double t1, Eigen::Vector2d centre, double sigma,
+                                     unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> T(t0, t1);
+  std::normal_distribution<double> N(0.0, sigma > 0 ? sigma : 1.0);
+  Eigen::Matrix2Xd p(2, n);
+  for (int k = 0; k < n; ++k) {
+    const double t = T(rng);
+    p.col(k) = centre + r(t) * Eigen::Vector2d(std::cos(t), std::sin(t));
+    if (sigma > 0) p.col(k) += Eigen::Vector2d(N(rng), N(rng));
+  }
+  return p;
+}
+
 // A measured number for RecordProperty, in 3-digit scientific notation.
 inline std::string sci(double x) {
   std::ostringstream o;

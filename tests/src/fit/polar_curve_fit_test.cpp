@@ -16,20 +16,7 @@ namespace polarform {
 namespace {
 
 using test::kPi;
-
-Eigen::Matrix2Xd polar_points(const std::function<double(double)>& r, int n, double t0, double t1,
-                              Eigen::Vector2d centre, double sigma, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> T(t0, t1);
-  std::normal_distribution<double> N(0.0, sigma > 0 ? sigma : 1.0);
-  Eigen::Matrix2Xd p(2, n);
-  for (int k = 0; k < n; ++k) {
-    const double t = T(rng);
-    p.col(k) = centre + r(t) * Eigen::Vector2d(std::cos(t), std::sin(t));
-    if (sigma > 0) p.col(k) += Eigen::Vector2d(N(rng), N(rng));
-  }
-  return p;
-}
+using test::polar_points;
 
 // Distance from q to the curve by dense sampling and local refinement (independent of the fitter).
 double dense_distance(const NurbsCurve2d& c, const Eigen::Vector2d& q) {

@@ -19,16 +19,7 @@ using test::kPi;
 // n points of r(θ) about `centre` at random θ in [t0, t1] with noise σ per coordinate.
 Eigen::Matrix2Xd ring(const std::function<double(double)>& r, int n, Eigen::Vector2d centre,
                       double sigma, unsigned seed, double t0 = 0.0, double t1 = 2 * kPi) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> T(t0, t1);
-  std::normal_distribution<double> N(0.0, sigma > 0 ? sigma : 1.0);
-  Eigen::Matrix2Xd p(2, n);
-  for (int k = 0; k < n; ++k) {
-    const double t = T(rng);
-    p.col(k) = centre + r(t) * Eigen::Vector2d(std::cos(t), std::sin(t));
-    if (sigma > 0) p.col(k) += Eigen::Vector2d(N(rng), N(rng));
-  }
-  return p;
+  return test::polar_points(r, n, t0, t1, centre, sigma, seed);
 }
 
 Eigen::Matrix2Xd joined(const Eigen::Matrix2Xd& a, const Eigen::Matrix2Xd& b) {

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/export/svg_elements.h"
 #include "tests/ui/cli/cli_run.h"
 
 namespace polarform::cam_job_test {
@@ -26,34 +27,6 @@ struct Box {
   }
   bool contains(double x, double y) const { return x > left && x < right && y > top && y < bottom; }
 };
-
-std::vector<const XMLElement*> with_class(const XMLElement* root, const std::string& cls) {
-  std::vector<const XMLElement*> found;
-  std::function<void(const XMLElement*)> visit = [&](const XMLElement* e) {
-    if (const char* c = e->Attribute("class")) {
-      std::istringstream words(c);
-      for (std::string w; words >> w;)
-        if (w == cls) found.push_back(e);
-    }
-    for (const XMLElement* child = e->FirstChildElement(); child;
-         child = child->NextSiblingElement())
-      visit(child);
-  };
-  visit(root);
-  return found;
-}
-
-// The absolute M/L points of path data, as subpaths (marker shapes: their first point).
-std::vector<std::vector<std::pair<double, double>>> subpaths(const std::string& d) {
-  std::vector<std::vector<std::pair<double, double>>> out;
-  static const std::regex command(R"(([ML])(-?[0-9.]+) (-?[0-9.]+))");
-  for (auto it = std::sregex_iterator(d.begin(), d.end(), command); it != std::sregex_iterator();
-       ++it) {
-    if ((*it)[1] == "M") out.emplace_back();
-    out.back().emplace_back(std::stod((*it)[2]), std::stod((*it)[3]));
-  }
-  return out;
-}
 
 // Text extent from its font size: a lower bound on the glyphs' width (0.45 em per character) so
 // that the check never blames the legend for text it does not cover.
@@ -77,12 +50,12 @@ Box text_box(const XMLElement* text) {
 // What the legend of `panel` hides: one description per hidden item.
 std::vector<std::string> hidden_by_legend(const XMLElement* panel) {
   std::vector<std::string> hidden;
-  for (const XMLElement* legend : with_class(panel, "legend")) {
+  for (const XMLElement* legend : test::by_class(panel, "legend")) {
     const XMLElement* r = legend->FirstChildElement("rect");
     const double x = r->DoubleAttribute("x"), y = r->DoubleAttribute("y");
     const Box box{x, y, x + r->DoubleAttribute("width"), y + r->DoubleAttribute("height")};
-    for (const XMLElement* series : with_class(panel, "series"))
-      for (const auto& piece : subpaths(series->Attribute("d")))
+    for (const XMLElement* series : test::by_class(panel, "series"))
+      for (const Polyline& piece : test::subpaths(series->Attribute("d")))
         for (std::size_t i = 0; i < piece.size(); ++i) {
           const auto [x0, y0] = piece[i];
           const auto [x1, y1] = piece[i + 1 < piece.size() ? i + 1 : i];
@@ -94,15 +67,15 @@ std::vector<std::string> hidden_by_legend(const XMLElement* panel) {
               k = steps;
             }
         }
-    for (const XMLElement* markers : with_class(panel, "markers"))
-      for (const auto& marker : subpaths(markers->Attribute("d")))
-        if (box.contains(marker.front().first, marker.front().second)) hidden.push_back("a marker");
-    for (const XMLElement* ring : with_class(panel, "highlight")) {
+    for (const XMLElement* markers : test::by_class(panel, "markers"))
+      for (const Polyline& marker : test::subpaths(markers->Attribute("d")))
+        if (box.contains(marker.front().x, marker.front().y)) hidden.push_back("a marker");
+    for (const XMLElement* ring : test::by_class(panel, "highlight")) {
       const double cx = ring->DoubleAttribute("cx"), cy = ring->DoubleAttribute("cy");
       if (box.overlaps({cx - 3, cy - 3, cx + 3, cy + 3})) hidden.push_back("a highlight");
     }
     for (const char* cls : {"annotation", "reference-label"})
-      for (const XMLElement* text : with_class(panel, cls))
+      for (const XMLElement* text : test::by_class(panel, cls))
         if (box.overlaps(text_box(text)))
           hidden.push_back(std::string(cls) + " '" + text->GetText() + "'");
   }
@@ -150,12 +123,12 @@ TEST(ExamplePlots, LegendsHideNothingAndAngleAxesNameTheirAngle) {
       ++plots;
       tinyxml2::XMLDocument doc;
       ASSERT_EQ(doc.LoadFile(entry.path().c_str()), tinyxml2::XML_SUCCESS);
-      for (const XMLElement* panel : with_class(doc.RootElement(), "panel")) {
-        legends += static_cast<int>(with_class(panel, "legend").size());
+      for (const XMLElement* panel : test::by_class(doc.RootElement(), "panel")) {
+        legends += static_cast<int>(test::by_class(panel, "legend").size());
         EXPECT_THAT(hidden_by_legend(panel), testing::IsEmpty());
       }
       // θ (cam angle, azimuth), ψ (polar angle of a contour), φ (polar angle from an axis).
-      for (const XMLElement* label : with_class(doc.RootElement(), "x-label")) {
+      for (const XMLElement* label : test::by_class(doc.RootElement(), "x-label")) {
         const std::string text = label->GetText();
         if (text.find("angle") == std::string::npos && text.find("azimuth") == std::string::npos)
           continue;
