@@ -1,12 +1,17 @@
 // The fit job's files: everything listed is written, report.json carries the documented fields
 // with sane values (poles, warnings, rejected outliers), deviation.ply holds one point per input
 // point, and a broken scan stops the job with an error naming its line before anything is written.
+#include "jobs/fit/fit_outputs.h"
+
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <numbers>
 #include <set>
 #include <string>
+#include <vector>
 
-#include "jobs/fit/fit_outputs.h"
 #include "src/error.h"
 #include "src/io/point_cloud.h"
 #include "tests/support/designers/synthetic_scans.h"
@@ -117,15 +122,55 @@ TEST(FitOutputs, PolarProfileWritesCurveFilesWithDxf) {
   const FitJobResult r = run_fit_job(write_text(dir / "profile.csv", text), o);
   EXPECT_EQ(r.method, "polar");
   const std::vector<std::string> files = write_fit_outputs(r, dir / "out");
-  EXPECT_EQ(files_in(dir / "out"),
-            (std::set<std::string>{"curve.dxf", "curve.igs", "curve.stp", "curve.x3d",
-                                   "deviation.ply", "preview.svg", "report.html", "report.json"}));
+  EXPECT_EQ(
+      files_in(dir / "out"),
+      (std::set<std::string>{"curvature.svg", "curve.dxf", "curve.igs", "curve.stp", "curve.x3d",
+                             "deviation.ply", "preview.svg", "report.html", "report.json"}));
   const nlohmann::json j = read_json(dir / "out/report.json");
   EXPECT_EQ(j["method"], "polar");
+  // r = 30 (1 + 0.05 cos 3θ) is convex (r² + 2r′² − r r″ > 0): no inflection.
+  EXPECT_TRUE(j["interrogation"]["inflections_deg"].empty());
+  EXPECT_EQ(j["interrogation"]["derivative_order"], 5);
   EXPECT_TRUE(j["closed"].get<bool>());
   EXPECT_EQ(j["degrees"]["nurbs"][0], 5);               // cubic F times the RQB base circle
   EXPECT_LE(j["error_mm"]["max"].get<double>(), 1e-4);  // the tolerance, measured
   EXPECT_GT(j["refinements"].get<int>(), 0);
+}
+
+// r = 30 (1 + 0.15 cos 3θ) turns inwards on each lobe's flank: six inflections where
+// r² + 2r′² − r r″ = 0 (found here by bisection on the closed form); the fit reports them within
+// 0.5°.
+TEST(FitOutputs, ProfileInflectionsAreReportedWhereTheShapeHasThem) {
+  const auto dir = scratch_dir();
+  const auto r = [](double t) { return 30 * (1 + 0.15 * std::cos(3 * t)); };
+  std::string text = "x,y,z\n";
+  for (int k = 0; k < 1440; ++k) {
+    const double t = k * std::numbers::pi / 720;
+    text += std::to_string(r(t) * std::cos(t)) + "," + std::to_string(r(t) * std::sin(t)) + ",0\n";
+  }
+  const auto numerator = [](double t) {
+    const double e = 0.15, c = std::cos(3 * t), s = std::sin(3 * t);
+    return (1 + e * c) * (1 + e * c) + 18 * e * e * s * s + 9 * e * c * (1 + e * c);
+  };
+  std::vector<double> expected;
+  for (int k = 0; k < 3600; ++k) {
+    double a = k * std::numbers::pi / 1800, b = (k + 1) * std::numbers::pi / 1800;
+    if (numerator(a) * numerator(b) >= 0) continue;
+    for (int it = 0; it < 60; ++it) {
+      const double m = 0.5 * (a + b);
+      ((numerator(m) > 0) == (numerator(a) > 0) ? a : b) = m;
+    }
+    expected.push_back(0.5 * (a + b) * 180 / std::numbers::pi);
+  }
+  ASSERT_EQ(expected.size(), 6u);
+  FitJobOptions o;
+  o.tolerance = 1e-4;
+  const FitJobResult fit = run_fit_job(write_text(dir / "lobes.csv", text), o);
+  const nlohmann::json j = fit_report_json(fit, {});
+  std::vector<double> found = j["interrogation"]["inflections_deg"].get<std::vector<double>>();
+  std::sort(found.begin(), found.end());
+  ASSERT_EQ(found.size(), expected.size());
+  for (std::size_t i = 0; i < found.size(); ++i) EXPECT_NEAR(found[i], expected[i], 0.5) << i;
 }
 
 TEST(FitOutputs, NanLineIsNamedAndNothingIsWritten) {
