@@ -14,6 +14,7 @@
 #include "export/svg_plot.h"
 #include "export/x3d_writer.h"
 #include "jobs/fit/fit_plots.h"
+#include "jobs/fit/profile_curvature_figure.h"
 #include "jobs/fit/profile_interrogation.h"
 #include "jobs/report/output_files.h"
 #include "polarform_version.h"
@@ -223,21 +224,8 @@ json fit_report_fields(const FitJobResult& r) {
                      {"largest_mm", o.largest}};
   }
   j["warnings"] = r.warnings;
-  if (const auto* profile = std::get_if<ProfileFit>(&r.fit)) {
-    const ProfileInterrogation q = interrogate_profile(*profile);
-    json interrogation = {{"inflections_deg", json::array()},
-                          {"derivative_order", q.order},
-                          {"max_derivative_jump", 0.0},
-                          {"max_derivative_jump_at_deg", nullptr}};
-    for (const ProfileInterrogation::Place& p : q.inflections)
-      interrogation["inflections_deg"].push_back(p.angle_deg);
-    for (const ProfileInterrogation::Place& p : q.derivative_jumps)
-      if (p.value > interrogation["max_derivative_jump"].get<double>()) {
-        interrogation["max_derivative_jump"] = p.value;
-        interrogation["max_derivative_jump_at_deg"] = p.angle_deg;
-      }
-    j["interrogation"] = interrogation;
-  }
+  if (const auto* profile = std::get_if<ProfileFit>(&r.fit))
+    j["interrogation"] = interrogation_json(interrogate_profile(profile->polar));
   return j;
 }
 
@@ -297,8 +285,8 @@ std::map<std::string, std::string> render_fit_outputs(const FitJobResult& r) {
   const std::string preview = svg_document(fit_preview_figure(r));
   content["preview.svg"] = preview;
   if (profile)
-    content["curvature.svg"] =
-        svg_document(profile_curvature_figure(interrogate_profile(*profile)));
+    content["curvature.svg"] = svg_document(profile_curvature_figure(
+        interrogate_profile(profile->polar), "polar angle θ about the centre [deg]"));
   const std::vector<std::string> files = fit_file_list(content);
   const json report = fit_report_json(r, files);
   content["report.json"] = report_json_text(report);

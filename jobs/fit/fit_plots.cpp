@@ -5,7 +5,6 @@
 #include <numbers>
 #include <sstream>
 
-#include "src/number_text.h"
 #include "src/nurbs/tessellation.h"
 #include "src/units.h"
 
@@ -140,42 +139,6 @@ Figure surface_preview(const FitJobResult& r) {
 
 int marker_stride(Eigen::Index n, int limit) {
   return std::max(1, static_cast<int>((n + limit - 1) / limit));
-}
-
-Figure profile_curvature_figure(const ProfileInterrogation& q) {
-  Figure f(900, 620);
-  f.shared_x = true;
-  f.title = "Curvature of the fitted curve: " + std::to_string(q.inflections.size()) +
-            (q.inflections.size() == 1 ? " inflection" : " inflections");
-  Plot& kappa = f.add_panel();
-  kappa.x_label = "polar angle θ about the centre [deg]";
-  kappa.y_label = "signed curvature κ [1/mm]";
-  kappa.x_range = AxisRange{0, 360};
-  kappa.x_tick_step = 30;
-  // Sorted by angle, broken where the curve wraps through 360°.
-  std::vector<std::pair<double, double>> samples;
-  for (std::size_t i = 0; i < q.angle_deg.size(); ++i)
-    samples.emplace_back(q.angle_deg[i], q.curvature[i]);
-  std::sort(samples.begin(), samples.end());
-  Series curve{"κ(θ) of the NURBS curve", {}, {}, Series::Style::line, {}};
-  for (const auto& [a, k] : samples) {
-    curve.x.push_back(a);
-    curve.y.push_back(k);
-  }
-  kappa.add(std::move(curve));
-  kappa.add_horizontal_line(0.0);
-  for (const ProfileInterrogation::Place& p : q.inflections)
-    kappa.add_highlight(p.angle_deg, 0.0,
-                        "inflection at θ = " + format_trimmed(p.angle_deg, 4) + "°");
-  Plot& jumps = f.add_panel();
-  jumps.y_label = "jump of C^(" + std::to_string(q.order) + ") at knots";
-  Series bars{"", {}, {}, Series::Style::markers, {}};
-  for (const ProfileInterrogation::Place& p : q.derivative_jumps) {
-    bars.x.push_back(p.angle_deg);
-    bars.y.push_back(p.value);
-  }
-  jumps.add(std::move(bars));
-  return f;
 }
 
 Figure fit_preview_figure(const FitJobResult& r) {

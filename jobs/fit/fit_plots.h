@@ -6,16 +6,10 @@
 
 #include "export/figure.h"
 #include "jobs/fit/fit_job.h"
-#include "jobs/fit/profile_interrogation.h"
 
 namespace polarform {
 
 Figure fit_preview_figure(const FitJobResult& r);
-
-// A profile's curvature.svg: signed curvature against the polar angle about the centre with the
-// inflections marked, and the jump of the degree-th derivative at every knot
-// (profile_interrogation.h).
-Figure profile_curvature_figure(const ProfileInterrogation& interrogation);
 
 // Every k-th index so that at most `limit` of n remain (k >= 1): how the preview thins markers.
 int marker_stride(Eigen::Index n, int limit);

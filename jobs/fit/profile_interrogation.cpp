@@ -18,19 +18,34 @@ double angle_at(const PolarCurveFit& fit, double u) {
 
 }  // namespace
 
-ProfileInterrogation interrogate_profile(const ProfileFit& fit, int samples) {
-  const NurbsCurve2d& c = fit.polar.curve;
+ProfileInterrogation interrogate_profile(const PolarCurveFit& fit, int samples) {
+  const NurbsCurve2d& c = fit.curve;
   ProfileInterrogation out;
   out.order = c.degree();
   for (int i = 0; i <= samples; ++i) {
     const double u = c.front() + (c.back() - c.front()) * i / samples;
-    out.angle_deg.push_back(angle_at(fit.polar, u));
+    out.angle_deg.push_back(angle_at(fit, u));
     out.curvature.push_back(signed_curvature(c, u));
   }
-  for (const double u : inflections(c)) out.inflections.push_back({u, angle_at(fit.polar, u), 0.0});
+  for (const double u : inflections(c)) out.inflections.push_back({u, angle_at(fit, u), 0.0});
   for (const KnotJump& j : derivative_jumps(c, c.degree()))
-    out.derivative_jumps.push_back({j.u, angle_at(fit.polar, j.u), j.jump});
+    out.derivative_jumps.push_back({j.u, angle_at(fit, j.u), j.jump});
   return out;
+}
+
+nlohmann::ordered_json interrogation_json(const ProfileInterrogation& q) {
+  nlohmann::ordered_json j = {{"inflections_deg", nlohmann::ordered_json::array()},
+                              {"derivative_order", q.order},
+                              {"max_derivative_jump", 0.0},
+                              {"max_derivative_jump_at_deg", nullptr}};
+  for (const ProfileInterrogation::Place& p : q.inflections)
+    j["inflections_deg"].push_back(p.angle_deg);
+  for (const ProfileInterrogation::Place& p : q.derivative_jumps)
+    if (p.value > j["max_derivative_jump"].get<double>()) {
+      j["max_derivative_jump"] = p.value;
+      j["max_derivative_jump_at_deg"] = p.angle_deg;
+    }
+  return j;
 }
 
 }  // namespace polarform

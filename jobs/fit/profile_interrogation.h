@@ -4,9 +4,10 @@
 // of report.json's "interrogation".
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <vector>
 
-#include "jobs/fit/fit_job.h"
+#include "src/fit/polar_curve_fit.h"
 
 namespace polarform {
 
@@ -20,7 +21,12 @@ struct ProfileInterrogation {
   int order = 0;                        // p, the curve's degree
 };
 
-// κ at `samples` parameters, the inflections and the knots' jumps of the fitted curve.
-ProfileInterrogation interrogate_profile(const ProfileFit& fit, int samples = 2000);
+// κ at `samples` parameters, the inflections and the knots' jumps of a fitted polar curve (the
+// fit job's profile, scan-cam's cam profile).
+ProfileInterrogation interrogate_profile(const PolarCurveFit& fit, int samples = 2000);
+
+// report.json's "interrogation": inflections_deg, derivative_order, max_derivative_jump and
+// max_derivative_jump_at_deg.
+nlohmann::ordered_json interrogation_json(const ProfileInterrogation& interrogation);
 
 }  // namespace polarform

@@ -13,6 +13,8 @@
 #include "export/step_writer.h"
 #include "export/svg_plot.h"
 #include "export/x3d_writer.h"
+#include "jobs/fit/profile_curvature_figure.h"
+#include "jobs/fit/profile_interrogation.h"
 #include "jobs/report/output_files.h"
 #include "jobs/scan_cam/scan_cam_plots.h"
 #include "polarform_version.h"
@@ -215,6 +217,7 @@ json scan_cam_report_json(const ScanCamJobResult& r, const std::vector<std::stri
       j["nominal"]["svaj_difference"][names[k]] = stats(c.svaj_stats[k]);
   }
   if (r.tolerance) j["tolerance"] = {{"band_mm", *r.tolerance}, {"within", r.within_tolerance}};
+  j["interrogation"] = interrogation_json(interrogate_profile(r.scan.fit));
   j["warnings"] = r.warnings;
   j["files"] = files;
   j["seconds"] = {{"read", r.read_seconds}, {"total", r.seconds}};
@@ -248,7 +251,10 @@ std::vector<std::string> write_scan_cam_outputs(const ScanCamJobResult& r,
   std::map<std::string, std::string> svgs = {
       {"svaj.svg", svg_document(scan_svaj_figure(r))},
       {"deviation.svg", svg_document(scan_deviation_figure(r))},
-      {"profile.svg", svg_document(scan_profile_figure(r))}};
+      {"profile.svg", svg_document(scan_profile_figure(r))},
+      {"curvature.svg",
+       svg_document(profile_curvature_figure(interrogate_profile(r.scan.fit),
+                                             "polar angle ψ of the contour, cam frame [deg]"))}};
   if (r.comparison) {
     svgs["svaj_difference.svg"] = svg_document(scan_svaj_difference_figure(r));
     content["deviation.csv"] = deviation_csv(*r.comparison);
