@@ -44,11 +44,16 @@ bool VesselDesignPanel::draw(VesselProject& p) {
   changed |= drag_number("pressure [MPa]", d.pressure, 0.01, 0.0, 1e4, "%.3f");
   section("Head preset");
   changed |= draw_preset(d);
+  // An exact head is the preset itself: the synthesis's settings do not apply to it.
+  const bool exact = d.preset && d.head_design == HeadDesign::exact;
   section("End conditions");
+  if (exact) ImGui::TextDisabled("not used by an exact head");
+  ImGui::BeginDisabled(exact);
   changed |= draw_end("junction A (θ = 0°)", d.end_a, d.radius);
   changed |= draw_end("junction B (θ = 180°)", d.end_b, d.radius);
   section("Synthesis");
   changed |= draw_synthesis(d.synthesis);
+  ImGui::EndDisabled();
   section("Conversion");
   changed |= log_slider("tolerance [mm]", p.tolerance, 1e-6, 1.0, "%.2g");
   ImGui::PopItemWidth();
