@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
 
@@ -215,6 +216,27 @@ const MotionExtrema& CamAnalysisStage::motion_extrema() const {
   return std::get<CylindricalCamAnalysis>(cam).motion;
 }
 
+namespace {
+
+// The follower's dynamics along the motion curves: a roller touches with its radius, a flat face
+// is flat, a knife edge has no line contact (no contact stress).
+FollowerDynamics plate_dynamics(const CamDesignStage& design, const MotionCurves& m,
+                                const PlateCurves& curves) {
+  const Follower& follower = design.project.cam.follower;
+  FollowerLoad load = *design.project.load;
+  if (follower.kind == FollowerKind::KnifeEdge) load.contact_width = 0;
+  const double r1 = follower.kind == FollowerKind::Roller ? follower.roller_radius
+                                                          : std::numeric_limits<double>::infinity();
+  std::vector<MotionSample> motion;
+  for (std::size_t i = 0; i < m.theta.size(); ++i)
+    motion.push_back({m.theta[i], m.s[i], m.v[i], m.a[i],
+                      curves.curvature[i] != 0 ? 1 / curves.curvature[i]
+                                               : std::numeric_limits<double>::infinity()});
+  return follower_dynamics(motion, design.project.cam.rpm, r1, load);
+}
+
+}  // namespace
+
 CamAnalysisStage analyse_cam(const CamDesignStage& design, const CamJobOptions& options) {
   CamAnalysisStage a;
   a.angles = uniform_angles(options.analysis_angles);
@@ -223,6 +245,7 @@ CamAnalysisStage analyse_cam(const CamDesignStage& design, const CamJobOptions& 
   if (const auto* plate = std::get_if<PlateCam>(&design.cam)) {
     PlateCamAnalysis p{analyse(*plate, a.angles), {}};
     sample_plate(*plate, options.curve_samples, a.curves, p.curves);
+    if (design.project.load) a.dynamics = plate_dynamics(design, a.curves, p.curves);
     a.cam = std::move(p);
   } else {
     const auto& barrel = std::get<BarrelCam>(design.cam);
@@ -242,6 +265,13 @@ CamAnalysisStage analyse_cam(const CamDesignStage& design, const CamJobOptions& 
                          " at θ = " + degrees_text(worst.theta) + " exceeds the limit " +
                          degrees_text(*a.pressure_angle_limit) +
                          ": increase the base radius, lengthen the segment or offset the follower");
+  if (a.dynamics && a.dynamics->jumps)
+    a.warnings.push_back("the follower jumps: the contact force falls to " +
+                         number_text(a.dynamics->least_force.force) +
+                         " N at θ = " + degrees_text(a.dynamics->least_force.theta) +
+                         "; a spring rate of at least " + number_text(a.dynamics->min_spring_rate) +
+                         " N/mm (same preload) keeps contact at " +
+                         number_text(design.project.cam.rpm) + " rpm");
   return a;
 }
 

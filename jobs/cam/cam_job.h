@@ -21,6 +21,7 @@
 #include "designers/cam/barrel_cam.h"
 #include "designers/cam/cam_analysis.h"
 #include "designers/cam/continuity.h"
+#include "designers/cam/follower_dynamics.h"
 #include "designers/cam/groove_surface.h"
 #include "designers/convert/degree_limited.h"
 #include "designers/convert/polar_conversion.h"
@@ -91,7 +92,10 @@ struct CamAnalysisStage {
   MotionCurves curves;
   std::variant<PlateCamAnalysis, CylindricalCamAnalysis> cam;  // as the design's cam
   std::optional<double> pressure_angle_limit;  // rad: the project's, or the follower's default
-  std::vector<std::string> warnings;           // a pressure angle beyond the limit
+  std::vector<std::string> warnings;           // a pressure angle beyond the limit, a jump
+  // With the project's <dynamics>, for a plate cam: force, torque, contact stress over the
+  // motion curves' angles (both sides of every segment boundary).
+  std::optional<FollowerDynamics> dynamics;
 
   // Whether the largest |pressure angle| stays within the limit (true without a limit).
   bool pressure_angle_within_limit() const;

@@ -94,6 +94,20 @@ std::vector<KeyFigure> cam_key_results(const CamDesignStage& design,
     }
     out.push_back({"undercut", undercut});
   }
+  if (const auto& dyn = analysis.dynamics) {
+    std::string force =
+        number_text(dyn->least_force.force) + " N at θ = " + degrees_text(dyn->least_force.theta);
+    force += dyn->jumps ? ": the follower JUMPS" : "";
+    force += dyn->jump_rpm ? "; it jumps from " + number_text(*dyn->jump_rpm) + " rpm"
+                           : "; it never jumps";
+    out.push_back({"min contact force", force});
+    out.push_back({"max camshaft torque", number_text(dyn->largest_torque.torque) + " N·m at θ = " +
+                                              degrees_text(dyn->largest_torque.theta)});
+    if (dyn->largest_stress.contact_stress > 0)
+      out.push_back(
+          {"max contact stress", number_text(dyn->largest_stress.contact_stress) +
+                                     " MPa at θ = " + degrees_text(dyn->largest_stress.theta)});
+  }
   if (conversion) {
     const PolarConversion& c = conversion->conversion;
     out.push_back({"NURBS profile", "degree " + std::to_string(conversion->degree()) + ", " +

@@ -306,4 +306,38 @@ Figure conversion_error_figure(const CamConversionStage& c, bool log_scale) {
   return f;
 }
 
+Figure dynamics_figure(const CamDesignStage& d, const CamAnalysisStage& a) {
+  const FollowerDynamics& dyn = a.dynamics.value();
+  Figure f(900, 760);
+  f.title = "Follower dynamics at " + number_text(d.project.cam.rpm) + " rpm";
+  f.shared_x = true;
+  std::vector<double> x, force, torque, stress;
+  for (const DynamicsSample& s : dyn.samples) {
+    x.push_back(s.theta * kDegreesPerRadian);
+    force.push_back(s.force);
+    torque.push_back(s.torque);
+    stress.push_back(s.contact_stress);
+  }
+  Plot& fp = f.add_panel();
+  fp.y_label = "contact force [N]";
+  cam_angle_axis(fp);
+  fp.add(series("", x, force));
+  fp.add_horizontal_line(0.0, dyn.jumps ? "contact lost below" : "", kJumpColor);
+  if (dyn.jumps)
+    fp.add_highlight(dyn.least_force.theta * kDegreesPerRadian, dyn.least_force.force,
+                     "the follower jumps: " + number_text(dyn.least_force.force) + " N");
+  mark_segments(d, fp, true);
+  Plot& tp = f.add_panel();
+  tp.y_label = "camshaft torque [N·m]";
+  cam_angle_axis(tp);
+  tp.add(series("", x, torque));
+  mark_segments(d, tp, false);
+  Plot& sp = f.add_panel();
+  sp.y_label = "contact stress [MPa]";
+  cam_angle_axis(sp);
+  sp.add(series("", x, stress));
+  mark_segments(d, sp, false);
+  return f;
+}
+
 }  // namespace polarform

@@ -26,5 +26,8 @@ Figure analysis_figure(const CamDesignStage& design, const CamAnalysisStage& ana
 Figure profile_figure(const CamDesignStage& design, const CamAnalysisStage& analysis,
                       const CamConversionStage& conversion);
 Figure conversion_error_figure(const CamConversionStage& conversion, bool log_scale = false);
+// force.svg: contact force (with the zero line: below it the follower jumps), camshaft torque and
+// contact stress against cam angle. Needs analysis.dynamics.
+Figure dynamics_figure(const CamDesignStage& design, const CamAnalysisStage& analysis);
 
 }  // namespace polarform

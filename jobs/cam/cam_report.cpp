@@ -108,6 +108,23 @@ void add_analysis_fields(json& j, const CamDesignStage& d, const CamAnalysisStag
     j["pressure_angle_limit_deg"] = nullptr;  // a flat-faced follower: fixed by its geometry
   }
   j["speed_rad_per_s"] = angular_speed(d.project.cam.rpm);
+  j["dynamics"] = nullptr;
+  if (const auto& dyn = r.dynamics) {
+    const FollowerLoad& load = *d.project.load;
+    j["dynamics"] = {{"mass_kg", load.mass},
+                     {"spring_rate_n_per_mm", load.spring_rate},
+                     {"preload_n", load.preload},
+                     {"damping_ns_per_mm", load.damping},
+                     {"min_contact_force_n", dyn->least_force.force},
+                     {"min_contact_force_at_deg", dyn->least_force.theta * kDegreesPerRadian},
+                     {"jumps", dyn->jumps},
+                     {"jump_rpm", dyn->jump_rpm ? json(*dyn->jump_rpm) : json(nullptr)},
+                     {"min_spring_rate_n_per_mm", dyn->min_spring_rate},
+                     {"max_torque_nm", dyn->largest_torque.torque},
+                     {"max_torque_at_deg", dyn->largest_torque.theta * kDegreesPerRadian},
+                     {"max_contact_stress_mpa", dyn->largest_stress.contact_stress},
+                     {"max_contact_stress_at_deg", dyn->largest_stress.theta * kDegreesPerRadian}};
+  }
 }
 
 // The degree-limited and capped profiles.

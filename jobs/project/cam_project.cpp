@@ -104,6 +104,21 @@ SegmentSpec read_segment(const XmlElementReader& r, double from, double level,
   return s;
 }
 
+// <dynamics mass="kg" spring-rate="N/mm" preload="N" damping="N·s/mm" contact-width="mm"
+//           youngs-modulus="MPa" poisson-ratio="0.3"/>; per-length quantities in the file's unit.
+FollowerLoad read_dynamics(const XmlElementReader& r, double unit) {
+  FollowerLoad l;
+  l.mass = r.positive("mass");
+  l.spring_rate = r.positive("spring-rate", 0.0, true) / unit;
+  l.preload = r.positive("preload", 0.0, true);
+  l.damping = r.positive("damping", 0.0, true) / unit;
+  l.contact_width = r.positive("contact-width", 0.0, true) * unit;
+  l.youngs_modulus = r.positive("youngs-modulus", l.youngs_modulus);
+  l.poisson_ratio = r.positive("poisson-ratio", l.poisson_ratio, true);
+  if (!(l.poisson_ratio < 0.5)) r.fail("poisson-ratio", "a Poisson ratio in [0, 0.5)");
+  return l;
+}
+
 CamDesign read_cam(const XmlElementReader& r, const std::string& file,
                    std::vector<UnknownName>& unknown) {
   CamDesign d;
@@ -222,6 +237,11 @@ CamProject parse_cam_project(const std::string& text, const std::string& file,
     read_conversion(r, unit, p);
     r.collect_unknown_names(unknown);
   }
+  if (const XMLElement* dynamics = root.child("dynamics")) {
+    const XmlElementReader r(dynamics, file);
+    p.load = read_dynamics(r, unit);
+    r.collect_unknown_names(unknown);
+  }
   root.collect_unknown_names(unknown);
   settle_unknown_names(unknown, policy, warnings);
   return p;
@@ -300,7 +320,19 @@ std::string cam_project_xml(const CamProject& p) {
   attr("base", p.conversion.base == ArcKind::rqb ? "rqb" : "quasi-uniform");
   attr("alpha", p.conversion.alpha == AlphaRule::printed ? "printed" : "minimax");
   attr("max-degree", p.max_degree ? std::to_string(*p.max_degree) : "");
-  out << "/>\n</polarform>\n";
+  out << "/>\n";
+  if (p.load) {
+    out << "  <dynamics";
+    attr("mass", number(p.load->mass));
+    attr("spring-rate", number(p.load->spring_rate));
+    attr("preload", number(p.load->preload));
+    attr("damping", number(p.load->damping));
+    attr("contact-width", number(p.load->contact_width));
+    attr("youngs-modulus", number(p.load->youngs_modulus));
+    attr("poisson-ratio", number(p.load->poisson_ratio));
+    out << "/>\n";
+  }
+  out << "</polarform>\n";
   return out.str();
 }
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "designers/cam/cam_design.h"
+#include "designers/cam/follower_dynamics.h"
 #include "designers/convert/polar_conversion.h"
 #include "jobs/project/unknown_names.h"
 
@@ -24,6 +25,9 @@ struct CamProject {
   // The largest acceptable |pressure angle|, rad; empty = the follower's default
   // (default_pressure_angle_limit in jobs/cam/cam_job.h).
   std::optional<double> pressure_angle_limit;
+  // The follower's mass, spring and contact (<dynamics>): the contact force, jump speed, camshaft
+  // torque and contact stress of a plate cam (designers/cam/follower_dynamics.h).
+  std::optional<FollowerLoad> load;
 
   bool operator==(const CamProject&) const = default;
 };

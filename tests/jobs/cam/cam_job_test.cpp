@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "jobs/cam/cam_outputs.h"
 #include "jobs/cam/cam_plots.h"
 #include "jobs/cam/cam_report.h"
 #include "src/error.h"
@@ -266,6 +267,41 @@ TEST(CamJob, FlatFacedPlotsShowTheContactOnTheFaceInsteadOfThePressureAngle) {
   const CamJobResult& roller = example("roller").result;
   EXPECT_EQ(analysis_figure(roller.design, roller.analysis).panels().front().y_label,
             "pressure angle [deg]");
+}
+
+// <dynamics>: a harmonic rise of 20 mm over 90° with m = 0.5 kg, k = 5 N/mm, F₀ = 50 N jumps from
+// the closed-form speed ω² = (k h + F₀)/(m·1e-3·h π²/(2β²)) = 7500 s⁻² (827 rpm): at 1200 rpm it
+// does, is warned about, and the report, key figures and force.svg say so; the project keeps it.
+TEST(CamJob, FollowerDynamicsFromTheProject) {
+  std::vector<std::string> warnings;
+  const CamProject project = parse_cam_project(
+      "<polarform version=\"1\"><cam follower=\"roller\" base-radius=\"40\" roller-radius=\"10\" "
+      "rpm=\"1200\"><segment kind=\"dwell\" to=\"90\"/><segment kind=\"rise\" law=\"harmonic\" "
+      "lift=\"20\" to=\"180\"/><segment kind=\"dwell\" to=\"240\"/><segment kind=\"return\" "
+      "law=\"cycloidal\" to=\"360\"/></cam><dynamics mass=\"0.5\" spring-rate=\"5\" preload=\"50\" "
+      "contact-width=\"12\"/></polarform>",
+      "dyn.xml", warnings);
+  ASSERT_TRUE(project.load);
+  EXPECT_TRUE(parse_cam_project(cam_project_xml(project), "saved.xml", warnings) == project);
+  const CamJobResult r = run_cam_job(project);
+  ASSERT_TRUE(r.analysis.dynamics);
+  const nlohmann::json j = cam_report_json(r, {});
+  const double jump_rpm = std::sqrt(7500.0) * 60 / (2 * kPi);
+  EXPECT_NEAR(j["dynamics"]["jump_rpm"].get<double>(), jump_rpm, 1e-9 * jump_rpm);
+  EXPECT_TRUE(j["dynamics"]["jumps"].get<bool>());
+  EXPECT_NEAR(j["dynamics"]["min_contact_force_at_deg"].get<double>(), 180.0, 1e-9);
+  // At θ = 180⁻: F = m·1e-3·s''·ω² + k h + F₀ with s'' = −h π²/(2β²) = −40 mm/rad².
+  const double w = 1200 * 2 * kPi / 60;
+  EXPECT_NEAR(j["dynamics"]["min_contact_force_n"].get<double>(),
+              0.5e-3 * -40 * w * w + 5 * 20 + 50, 1e-9);
+  bool warned = false;
+  for (const std::string& x : r.analysis.warnings) warned |= x.find("the follower jumps") == 0;
+  EXPECT_TRUE(warned);
+  EXPECT_GT(j["dynamics"]["max_contact_stress_mpa"].get<double>(), 0.0);
+  const std::map<std::string, std::string> files = render_cam_outputs(r);
+  EXPECT_EQ(files.count("force.svg"), 1u);
+  // Without <dynamics>, no dynamics and no force.svg.
+  EXPECT_TRUE(cam_report_json(example("roller").result, {})["dynamics"].is_null());
 }
 
 // The motion curves are sampled segment by segment: both one-sided values of a jump appear at the

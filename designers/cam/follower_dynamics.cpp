@@ -1,0 +1,97 @@
+#include "designers/cam/follower_dynamics.h"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+
+#include "src/error.h"
+#include "src/number_text.h"
+
+namespace polarform {
+
+namespace {
+
+void check(bool ok, const std::string& what, double value, const char* expected) {
+  if (!ok)
+    throw InputError("follower dynamics: " + what + " " + number_text(value) + ", expected " +
+                     expected);
+}
+
+// The smallest ω > 0 with m·a·1e-3·ω² + c·v·ω + (k·s + F₀) = 0 at one angle, if any (F falls below
+// zero only where the inertia or the damping pulls the follower off).
+std::optional<double> losing_speed(double mass_a, double damping_v, double spring) {
+  if (spring < 0) return 0.0;  // no force holds it even at rest
+  const double A = mass_a, B = damping_v, C = spring;
+  if (A == 0) {
+    if (B < 0) return C / -B;
+    return std::nullopt;
+  }
+  const double disc = B * B - 4 * A * C;
+  if (disc < 0) return std::nullopt;
+  const double r = std::sqrt(disc);
+  double best = std::numeric_limits<double>::infinity();
+  for (const double w : {(-B - r) / (2 * A), (-B + r) / (2 * A)})
+    if (w > 0) best = std::min(best, w);
+  if (!std::isfinite(best)) return std::nullopt;
+  return best;
+}
+
+}  // namespace
+
+double line_contact_stress(double force, double width, double r1, double r2, double youngs,
+                           double poisson) {
+  const double curvature =
+      (std::isfinite(r1) && r1 != 0 ? 1 / r1 : 0.0) + (std::isfinite(r2) && r2 != 0 ? 1 / r2 : 0.0);
+  if (!(force > 0) || !(curvature > 0)) return 0.0;
+  const double compliance = 2 * (1 - poisson * poisson) / youngs;
+  return std::sqrt(force * curvature / (std::numbers::pi * width * compliance));
+}
+
+FollowerDynamics follower_dynamics(const std::vector<MotionSample>& motion, double rpm,
+                                   double roller_radius, const FollowerLoad& load) {
+  check(load.mass >= 0 && std::isfinite(load.mass), "mass", load.mass, ">= 0 kg");
+  check(load.spring_rate >= 0 && std::isfinite(load.spring_rate), "spring rate", load.spring_rate,
+        ">= 0 N/mm");
+  check(load.preload >= 0 && std::isfinite(load.preload), "preload", load.preload, ">= 0 N");
+  check(load.damping >= 0 && std::isfinite(load.damping), "damping", load.damping, ">= 0 N·s/mm");
+  check(load.contact_width >= 0 && std::isfinite(load.contact_width), "contact width",
+        load.contact_width, ">= 0 mm");
+  check(load.youngs_modulus > 0 && std::isfinite(load.youngs_modulus), "Young's modulus",
+        load.youngs_modulus, "> 0 MPa");
+  check(load.poisson_ratio >= 0 && load.poisson_ratio < 0.5, "Poisson ratio", load.poisson_ratio,
+        "in [0, 0.5)");
+  const double w = rpm * 2 * std::numbers::pi / 60;  // rad/s
+  FollowerDynamics out;
+  double fastest = std::numeric_limits<double>::infinity();
+  for (const MotionSample& m : motion) {
+    // a [mm/rad²]·ω² = mm/s², ·1e-3 → m/s²; v [mm/rad]·ω = mm/s.
+    const double inertia = load.mass * 1e-3 * m.a, damping = load.damping * m.v;
+    const double spring = load.spring_rate * m.s + load.preload;
+    DynamicsSample d;
+    d.theta = m.theta;
+    d.force = inertia * w * w + damping * w + spring;
+    d.torque = d.force * m.v * 1e-3;  // N · mm/rad → N·m
+    if (load.contact_width > 0)
+      d.contact_stress =
+          line_contact_stress(d.force, load.contact_width, roller_radius, m.contour_radius,
+                              load.youngs_modulus, load.poisson_ratio);
+    if (out.samples.empty() || d.force < out.least_force.force) out.least_force = d;
+    if (out.samples.empty() || std::abs(d.torque) > std::abs(out.largest_torque.torque))
+      out.largest_torque = d;
+    if (out.samples.empty() || d.contact_stress > out.largest_stress.contact_stress)
+      out.largest_stress = d;
+    if (const auto speed = losing_speed(inertia, damping, spring))
+      fastest = std::min(fastest, *speed);
+    // The rate that makes F = 0 here at this speed, with the same preload.
+    if (m.s > 0)
+      out.min_spring_rate =
+          std::max(out.min_spring_rate, -(inertia * w * w + damping * w + load.preload) / m.s);
+    out.samples.push_back(d);
+  }
+  out.jumps = out.least_force.force < 0;
+  if (std::isfinite(fastest)) out.jump_rpm = fastest * 60 / (2 * std::numbers::pi);
+  return out;
+}
+
+}  // namespace polarform

@@ -1,0 +1,61 @@
+// The follower's dynamics at the cam's speed, for a translating follower held on the cam by a
+// spring (Norton, Cam Design and Manufacturing Handbook, ch. 8 and 10): the contact force
+// F = m·a + c·v + k·s + F₀ over the cycle, where it is least (F < 0: the follower jumps), the speed
+// at which it first jumps, the least spring rate that keeps contact, the camshaft torque
+// T = F·ds/dθ (power balance, no friction), and the Hertz line-contact stress between roller and
+// cam, p = √(F·(1/R₁ + 1/R₂) / (π·L·((1 − ν₁²)/E₁ + (1 − ν₂²)/E₂))).
+#pragma once
+
+#include <optional>
+#include <vector>
+
+namespace polarform {
+
+struct FollowerLoad {
+  double mass = 0.0;         // kg, the follower train's effective mass
+  double spring_rate = 0.0;  // N/mm
+  double preload = 0.0;      // N, the spring force at s = 0
+  double damping = 0.0;      // N·s/mm
+  // Line contact (roller or flat face on the cam): contact length L and both materials.
+  double contact_width = 0.0;        // mm; 0: no contact stress
+  double youngs_modulus = 210000.0;  // MPa, cam and follower alike
+  double poisson_ratio = 0.3;
+
+  bool operator==(const FollowerLoad&) const = default;
+};
+
+// The motion at one cam angle, per radian of cam angle, and the contour's radius of curvature
+// there (+inf for a flat contour, negative where it is concave).
+struct MotionSample {
+  double theta = 0.0;                // rad
+  double s = 0.0, v = 0.0, a = 0.0;  // mm, mm/rad, mm/rad²
+  double contour_radius = 0.0;       // mm
+};
+
+struct DynamicsSample {
+  double theta = 0.0;
+  double force = 0.0;           // N
+  double torque = 0.0;          // N·m, on the camshaft
+  double contact_stress = 0.0;  // MPa (0 without a contact width)
+};
+
+struct FollowerDynamics {
+  std::vector<DynamicsSample> samples;
+  DynamicsSample least_force, largest_torque, largest_stress;  // where they occur
+  bool jumps = false;              // the least force is negative: contact is lost
+  std::optional<double> jump_rpm;  // the lowest speed at which it jumps; none if never
+  double min_spring_rate = 0.0;    // N/mm: keeps F >= 0 at the design speed (same preload)
+};
+
+// At `rpm`; `roller_radius` (mm) is R₁ of the contact (0 for a flat face or a knife edge: then only
+// the contour's curvature counts). Throws InputError for a negative mass, rate, preload, damping or
+// width, a non-positive modulus or a Poisson ratio outside [0, 0.5).
+FollowerDynamics follower_dynamics(const std::vector<MotionSample>& motion, double rpm,
+                                   double roller_radius, const FollowerLoad& load);
+
+// The Hertz line-contact stress of force F (N) over width L (mm) between radii r1, r2 (mm; +inf
+// flat, negative concave) of one material (E in MPa, ν): MPa.
+double line_contact_stress(double force, double width, double r1, double r2, double youngs,
+                           double poisson);
+
+}  // namespace polarform
