@@ -249,8 +249,11 @@ std::map<std::string, std::string> render_cam_outputs(const CamJobResult& r,
       {"profile.svg", svg_document(profile_figure(r.design, r.analysis, r.conversion))},
       {"error.svg", svg_document(conversion_error_figure(r.conversion))}};
   content.insert(svgs.begin(), svgs.end());
-  if (r.analysis.dynamics)
-    content["force.svg"] = svg_document(dynamics_figure(r.design, r.analysis));
+  if (r.analysis.dynamics) {
+    content["force.svg"] = svg_document(contact_force_figure(r.design, r.analysis));
+    content["torque.svg"] = svg_document(camshaft_torque_figure(r.design, r.analysis));
+    content["stress.svg"] = svg_document(contact_stress_figure(r.design, r.analysis));
+  }
   const std::vector<std::string> files = report_file_list(content);
   const json report = cam_report_json(r, files);
   content["report.json"] = report_json_text(report);

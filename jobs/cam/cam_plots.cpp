@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 
 #include "designers/cam/cam_frame.h"
@@ -306,38 +307,49 @@ Figure conversion_error_figure(const CamConversionStage& c, bool log_scale) {
   return f;
 }
 
-Figure dynamics_figure(const CamDesignStage& d, const CamAnalysisStage& a) {
-  const FollowerDynamics& dyn = a.dynamics.value();
-  Figure f(900, 760);
-  f.title = "Follower dynamics at " + number_text(d.project.cam.rpm) + " rpm";
-  f.shared_x = true;
-  std::vector<double> x, force, torque, stress;
-  for (const DynamicsSample& s : dyn.samples) {
+namespace {
+
+// One quantity of the dynamics against cam angle, with the segment boundaries; `decorate` adds
+// to the plot.
+Figure dynamics_figure(const CamDesignStage& d, const CamAnalysisStage& a, const std::string& title,
+                       const std::string& y_label, double DynamicsSample::*value,
+                       const std::function<void(Plot&)>& decorate = {}) {
+  Figure f(900, 420);
+  f.title = title + " at " + number_text(d.project.cam.rpm) + " rpm";
+  Plot& plot = f.add_panel();
+  plot.y_label = y_label;
+  cam_angle_axis(plot);
+  std::vector<double> x, y;
+  for (const DynamicsSample& s : a.dynamics.value().samples) {
     x.push_back(s.theta * kDegreesPerRadian);
-    force.push_back(s.force);
-    torque.push_back(s.torque);
-    stress.push_back(s.contact_stress);
+    y.push_back(s.*value);
   }
-  Plot& fp = f.add_panel();
-  fp.y_label = "contact force [N]";
-  cam_angle_axis(fp);
-  fp.add(series("", x, force));
-  fp.add_horizontal_line(0.0, dyn.jumps ? "contact lost below" : "", kJumpColor);
-  if (dyn.jumps)
-    fp.add_highlight(dyn.least_force.theta * kDegreesPerRadian, dyn.least_force.force,
-                     "the follower jumps: " + number_text(dyn.least_force.force) + " N");
-  mark_segments(d, fp, true);
-  Plot& tp = f.add_panel();
-  tp.y_label = "camshaft torque [N·m]";
-  cam_angle_axis(tp);
-  tp.add(series("", x, torque));
-  mark_segments(d, tp, false);
-  Plot& sp = f.add_panel();
-  sp.y_label = "contact stress [MPa]";
-  cam_angle_axis(sp);
-  sp.add(series("", x, stress));
-  mark_segments(d, sp, false);
+  plot.add(series("", std::move(x), std::move(y)));
+  mark_segments(d, plot, true);
+  if (decorate) decorate(plot);
   return f;
+}
+
+}  // namespace
+
+Figure contact_force_figure(const CamDesignStage& d, const CamAnalysisStage& a) {
+  const FollowerDynamics& dyn = a.dynamics.value();
+  return dynamics_figure(
+      d, a, "Contact force", "contact force [N]", &DynamicsSample::force, [&](Plot& plot) {
+        plot.add_horizontal_line(0.0, dyn.jumps ? "contact lost below" : "", kJumpColor);
+        if (dyn.jumps)
+          plot.add_highlight(dyn.least_force.theta * kDegreesPerRadian, dyn.least_force.force,
+                             "the follower jumps: " + number_text(dyn.least_force.force) + " N");
+      });
+}
+
+Figure camshaft_torque_figure(const CamDesignStage& d, const CamAnalysisStage& a) {
+  return dynamics_figure(d, a, "Camshaft torque", "torque [N·m]", &DynamicsSample::torque);
+}
+
+Figure contact_stress_figure(const CamDesignStage& d, const CamAnalysisStage& a) {
+  return dynamics_figure(d, a, "Hertz contact stress", "contact stress [MPa]",
+                         &DynamicsSample::contact_stress);
 }
 
 }  // namespace polarform

@@ -26,8 +26,11 @@ Figure analysis_figure(const CamDesignStage& design, const CamAnalysisStage& ana
 Figure profile_figure(const CamDesignStage& design, const CamAnalysisStage& analysis,
                       const CamConversionStage& conversion);
 Figure conversion_error_figure(const CamConversionStage& conversion, bool log_scale = false);
-// force.svg: contact force (with the zero line: below it the follower jumps), camshaft torque and
-// contact stress against cam angle. Needs analysis.dynamics.
-Figure dynamics_figure(const CamDesignStage& design, const CamAnalysisStage& analysis);
+// The follower's dynamics against cam angle (needs analysis.dynamics): force.svg, the contact
+// force with the zero line below which the follower jumps; torque.svg, the camshaft torque;
+// stress.svg, the contact stress.
+Figure contact_force_figure(const CamDesignStage& design, const CamAnalysisStage& analysis);
+Figure camshaft_torque_figure(const CamDesignStage& design, const CamAnalysisStage& analysis);
+Figure contact_stress_figure(const CamDesignStage& design, const CamAnalysisStage& analysis);
 
 }  // namespace polarform

@@ -299,7 +299,7 @@ TEST(CamJob, FollowerDynamicsFromTheProject) {
   EXPECT_TRUE(warned);
   EXPECT_GT(j["dynamics"]["max_contact_stress_mpa"].get<double>(), 0.0);
   const std::map<std::string, std::string> files = render_cam_outputs(r);
-  EXPECT_EQ(files.count("force.svg"), 1u);
+  for (const char* svg : {"force.svg", "torque.svg", "stress.svg"}) EXPECT_EQ(files.count(svg), 1u);
   // Without <dynamics>, no dynamics and no force.svg.
   EXPECT_TRUE(cam_report_json(example("roller").result, {})["dynamics"].is_null());
 }
