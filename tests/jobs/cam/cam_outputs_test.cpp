@@ -19,20 +19,22 @@ namespace {
 
 using namespace cam_job_test;
 
-std::set<std::string> promised_files(bool plate) {
+std::set<std::string> promised_files(bool plate, bool dynamics) {
   const std::string stem = plate ? "profile" : "track";
   std::set<std::string> files = {stem + ".igs", stem + ".stp", stem + ".dxf", stem + ".x3d",
                                  "profile.svg", "svaj.csv",    "svaj.svg",    "analysis.svg",
                                  "error.svg",   "report.json", "report.html"};
   if (plate) files.insert("profile_deg3.dxf");
   if (!plate) files.insert({"groove.igs", "groove.stp"});  // cylindrical.xml asks for the groove
+  if (dynamics) files.insert({"force.svg", "torque.svg", "stress.svg"});  // scca_dynamics.xml
   return files;
 }
 
 TEST(CamOutputs, EveryPromisedFileExistsNonEmptyAndIsListed) {
   for (const std::string& name : kExampleNames) {
     const ExampleRun& run = example(name);
-    const std::set<std::string> promised = promised_files(run.result.plate());
+    const std::set<std::string> promised =
+        promised_files(run.result.plate(), run.result.analysis.dynamics.has_value());
     const std::map<std::string, std::string> files = snapshot(run.dir.path());
     std::set<std::string> written;
     for (const auto& [file, content] : files) {

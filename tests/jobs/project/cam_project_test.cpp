@@ -62,7 +62,7 @@ TEST(CamProject, ExamplesLoadWithoutWarningsAndRoundTripExactly) {
     EXPECT_EQ(cam_project_xml(again), cam_project_xml(p));
     ++count;
   }
-  EXPECT_EQ(count, 5);
+  EXPECT_EQ(count, 6);
 }
 
 // law="scca" with its fractions b, c, d (b + c + d = 1), kept through a save; the program's
