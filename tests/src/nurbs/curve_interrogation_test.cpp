@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -43,6 +44,27 @@ TEST(CurveInterrogation, DerivativeJumpsAtSimpleAndDoubleKnots) {
   EXPECT_NEAR(second[0].jump, (right - left).norm(), 1e-4);
   EXPECT_GT(second[0].jump, 1.0);
   EXPECT_THROW(derivative_jumps(d, 4), InputError);
+}
+
+// One cubic B-spline basis function on uniform knots of spacing h, as the y of a curve with
+// x = t: its third derivative jumps by (1, −4, 6, −4, 1)/h³ at its five knots (spec M2, check 1).
+TEST(CurveInterrogation, BasisFunctionJumpsAreTheBinomialPattern) {
+  const double h = 0.5;
+  Knots knots;
+  for (int i = 0; i <= 12; ++i) knots.push_back(h * i);
+  // Control points: x linear in t (no jumps), y the basis function N_4 (a single 1).
+  Points points;
+  for (int i = 0; i < 9; ++i) points.push_back({h * (i + 1), i == 4 ? 1.0 : 0.0});
+  const NurbsCurve2d c(3, knots, points);
+  const std::vector<KnotJump> jumps = derivative_jumps(c, 3);
+  const double pattern[] = {1, -4, 6, -4, 1};
+  for (int k = 0; k < 5; ++k) {
+    const double u = h * (4 + k);  // the support [4h, 8h] of N_4 between knots 4h … 8h
+    const auto it = std::find_if(jumps.begin(), jumps.end(),
+                                 [&](const KnotJump& j) { return std::abs(j.u - u) < 1e-12; });
+    ASSERT_NE(it, jumps.end()) << u;
+    EXPECT_NEAR(it->jump, std::abs(pattern[k]) / (h * h * h), 1e-12 / (h * h * h)) << u;
+  }
 }
 
 // A quarter circle of radius 5 as a rational quadratic: κ = 1/5 everywhere, counter-clockwise.
