@@ -284,9 +284,12 @@ std::map<std::string, std::string> render_fit_outputs(const FitJobResult& r) {
       x3d.str("polarform " + r.method + " fit of " + r.input.filename().string());
   const std::string preview = svg_document(fit_preview_figure(r));
   content["preview.svg"] = preview;
-  if (profile)
-    content["curvature.svg"] = svg_document(profile_curvature_figure(
-        interrogate_profile(profile->polar), "polar angle θ about the centre [deg]"));
+  if (profile) {
+    const ProfileInterrogation q = interrogate_profile(profile->polar);
+    content["curvature.svg"] =
+        svg_document(profile_curvature_figure(q, "polar angle θ about the centre [deg]"));
+    content["curvature.csv"] = interrogation_csv(q);
+  }
   const std::vector<std::string> files = fit_file_list(content);
   const json report = fit_report_json(r, files);
   content["report.json"] = report_json_text(report);

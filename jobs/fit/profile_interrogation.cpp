@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "export/csv_writer.h"
 #include "src/nurbs/curve_interrogation.h"
 #include "src/units.h"
 
@@ -24,13 +25,25 @@ ProfileInterrogation interrogate_profile(const PolarCurveFit& fit, int samples) 
   out.order = c.degree();
   for (int i = 0; i <= samples; ++i) {
     const double u = c.front() + (c.back() - c.front()) * i / samples;
+    const Eigen::Vector2d p = c.point(u);
+    out.u.push_back(u);
+    out.x.push_back(p.x());
+    out.y.push_back(p.y());
     out.angle_deg.push_back(angle_at(fit, u));
     out.curvature.push_back(signed_curvature(c, u));
+    out.curvature_derivative.push_back(curvature_derivative(c, u));
   }
   for (const double u : inflections(c)) out.inflections.push_back({u, angle_at(fit, u), 0.0});
   for (const KnotJump& j : derivative_jumps(c, c.degree()))
     out.derivative_jumps.push_back({j.u, angle_at(fit, j.u), j.jump});
   return out;
+}
+
+std::string interrogation_csv(const ProfileInterrogation& q) {
+  CsvWriter csv({"u", "x [mm]", "y [mm]", "polar angle [deg]", "kappa [1/mm]", "dkappa/du [1/mm]"});
+  for (std::size_t i = 0; i < q.u.size(); ++i)
+    csv.row({q.u[i], q.x[i], q.y[i], q.angle_deg[i], q.curvature[i], q.curvature_derivative[i]});
+  return csv.str();
 }
 
 nlohmann::ordered_json interrogation_json(const ProfileInterrogation& q) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <string>
 #include <vector>
 
 #include "src/fit/polar_curve_fit.h"
@@ -12,7 +13,9 @@
 namespace polarform {
 
 struct ProfileInterrogation {
-  std::vector<double> angle_deg, curvature;  // polar angle about the centre, signed κ (1/mm)
+  // At each sample: the curve parameter, the point, its polar angle about the centre (deg), the
+  // signed κ (1/mm) and dκ/du.
+  std::vector<double> u, x, y, angle_deg, curvature, curvature_derivative;
   struct Place {
     double u, angle_deg, value;  // curve parameter, polar angle, jump (mm/unit^p) or κ
   };
@@ -24,6 +27,10 @@ struct ProfileInterrogation {
 // κ at `samples` parameters, the inflections and the knots' jumps of a fitted polar curve (the
 // fit job's profile, scan-cam's cam profile).
 ProfileInterrogation interrogate_profile(const PolarCurveFit& fit, int samples = 2000);
+
+// curvature.csv: one row per sample, u, x [mm], y [mm], polar angle [deg], kappa [1/mm],
+// dkappa/du [1/mm].
+std::string interrogation_csv(const ProfileInterrogation& interrogation);
 
 // report.json's "interrogation": inflections_deg, derivative_order, max_derivative_jump and
 // max_derivative_jump_at_deg.

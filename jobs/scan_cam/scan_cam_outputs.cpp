@@ -248,6 +248,7 @@ std::vector<std::string> write_scan_cam_outputs(const ScanCamJobResult& r,
   content["profile.x3d"] = x3d.str(title);
   content["profile.dxf"] = dxf.str();
   content["svaj.csv"] = svaj_csv(r);
+  content["curvature.csv"] = interrogation_csv(interrogate_profile(r.scan.fit));
   std::map<std::string, std::string> svgs = {
       {"svaj.svg", svg_document(scan_svaj_figure(r))},
       {"deviation.svg", svg_document(scan_deviation_figure(r))},

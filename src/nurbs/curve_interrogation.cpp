@@ -87,6 +87,14 @@ double signed_curvature(const NurbsCurve2d& curve, double u) {
   return (d[1].x() * d[2].y() - d[1].y() * d[2].x()) / (speed * speed * speed);
 }
 
+double curvature_derivative(const NurbsCurve2d& curve, double u) {
+  const auto d = curve.derivatives(u, 3);
+  const double cross2 = d[1].x() * d[2].y() - d[1].y() * d[2].x();
+  const double cross3 = d[1].x() * d[3].y() - d[1].y() * d[3].x();
+  const double speed2 = d[1].squaredNorm(), speed = std::sqrt(speed2);
+  return (cross3 * speed2 - 3 * cross2 * d[1].dot(d[2])) / (speed2 * speed2 * speed);
+}
+
 // Per segment, D(t) = det(Pʷ, Pʷ′, Pʷ″) in t in [0, 1] has the sign of the curvature (w > 0).
 std::vector<double> inflections(const NurbsCurve2d& curve) {
   const BezierSegments b = decompose_bezier(curve.homogeneous());

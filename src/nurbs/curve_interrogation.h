@@ -23,6 +23,10 @@ std::vector<KnotJump> derivative_jumps(const NurbsCurve2d& curve, int k);
 // The signed curvature (C′ × C″)/|C′|³ at u, 1/mm: > 0 where the curve turns counter-clockwise.
 double signed_curvature(const NurbsCurve2d& curve, double u);
 
+// dκ/du at u, 1/mm per unit of u: ((C′ × C‴)|C′|² − 3 (C′ × C″)(C′ · C″)) / |C′|⁵ — where κ′ jumps
+// at a knot is where a fairing should act first (spec M2).
+double curvature_derivative(const NurbsCurve2d& curve, double u);
+
 // The parameters where the signed curvature changes sign, in increasing order (a root of
 // det(Pʷ, Pʷ′, Pʷ″) where it does not change sign is a flat point, not an inflection).
 std::vector<double> inflections(const NurbsCurve2d& curve);

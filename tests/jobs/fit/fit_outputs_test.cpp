@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <numbers>
 #include <set>
 #include <string>
@@ -122,12 +124,16 @@ TEST(FitOutputs, PolarProfileWritesCurveFilesWithDxf) {
   const FitJobResult r = run_fit_job(write_text(dir / "profile.csv", text), o);
   EXPECT_EQ(r.method, "polar");
   const std::vector<std::string> files = write_fit_outputs(r, dir / "out");
-  EXPECT_EQ(
-      files_in(dir / "out"),
-      (std::set<std::string>{"curvature.svg", "curve.dxf", "curve.igs", "curve.stp", "curve.x3d",
-                             "deviation.ply", "preview.svg", "report.html", "report.json"}));
+  EXPECT_EQ(files_in(dir / "out"),
+            (std::set<std::string>{"curvature.csv", "curvature.svg", "curve.dxf", "curve.igs",
+                                   "curve.stp", "curve.x3d", "deviation.ply", "preview.svg",
+                                   "report.html", "report.json"}));
   const nlohmann::json j = read_json(dir / "out/report.json");
   EXPECT_EQ(j["method"], "polar");
+  std::ifstream in(dir / "out/curvature.csv");
+  const std::string csv((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(csv.rfind("u,x [mm],y [mm],polar angle [deg],kappa [1/mm],dkappa/du [1/mm]\n", 0), 0u);
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 2001);
   // r = 30 (1 + 0.05 cos 3θ) is convex (r² + 2r′² − r r″ > 0): no inflection.
   EXPECT_TRUE(j["interrogation"]["inflections_deg"].empty());
   EXPECT_EQ(j["interrogation"]["derivative_order"], 5);

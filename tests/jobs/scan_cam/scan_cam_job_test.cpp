@@ -38,10 +38,10 @@ TEST(ScanCamJob, BundledRollerScanAgainstItsNominal) {
   const auto dir = scratch_dir();
   write_scan_cam_outputs(r, dir);
   EXPECT_EQ(files_in(dir),
-            (std::set<std::string>{"curvature.svg", "deviation.csv", "deviation.svg", "profile.dxf",
-                                   "profile.igs", "profile.stp", "profile.svg", "profile.x3d",
-                                   "report.html", "report.json", "svaj.csv", "svaj.svg",
-                                   "svaj_difference.svg"}));
+            (std::set<std::string>{"curvature.csv", "curvature.svg", "deviation.csv",
+                                   "deviation.svg", "profile.dxf", "profile.igs", "profile.stp",
+                                   "profile.svg", "profile.x3d", "report.html", "report.json",
+                                   "svaj.csv", "svaj.svg", "svaj_difference.svg"}));
   const nlohmann::json j = read_json(dir / "report.json");
   EXPECT_EQ(j["command"], "scan-cam");
   // roller.xml's contour is convex everywhere (no concave radius of curvature): so is the scan's.

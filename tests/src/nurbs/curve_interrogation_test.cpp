@@ -75,6 +75,18 @@ TEST(CurveInterrogation, CurvatureOfARationalCircleIsOneOverItsRadius) {
   EXPECT_TRUE(inflections(arc).empty());
 }
 
+// dκ/du against central differences of κ on a rational cubic (away from its knots).
+TEST(CurveInterrogation, CurvatureDerivativeIsTheSlopeOfTheCurvature) {
+  const NurbsCurve2d r(3, {0, 0, 0, 0, 1, 2, 3, 3, 3, 3},
+                       Points{{0, 0}, {1, 2}, {2, -1}, {3, 3}, {4, 0}, {5, 1}},
+                       {1, 2, 0.5, 1.5, 0.8, 1});
+  const double h = 1e-5;
+  for (double u : {0.3, 0.7, 1.4, 1.9, 2.5}) {
+    const double fd = (signed_curvature(r, u + h) - signed_curvature(r, u - h)) / (2 * h);
+    EXPECT_NEAR(curvature_derivative(r, u), fd, 1e-5 * std::max(1.0, std::abs(fd))) << u;
+  }
+}
+
 // Independent check: sign changes of the sampled curvature, bisected.
 std::vector<double> sampled_inflections(const NurbsCurve2d& c) {
   std::vector<double> out;
