@@ -38,7 +38,8 @@ FitJobOptions job_options(const FitArgs& a, FitJobOptions o) {
   constexpr FitJobMethod methods[] = {FitJobMethod::automatic, FitJobMethod::polar,
                                       FitJobMethod::spherical, FitJobMethod::cylindrical};
   constexpr Closure closures[] = {Closure::automatic, Closure::closed, Closure::open};
-  constexpr PoleTreatment poles[] = {PoleTreatment::none, PoleTreatment::g1, PoleTreatment::cap};
+  constexpr PoleTreatment poles[] = {PoleTreatment::none, PoleTreatment::g0, PoleTreatment::g1,
+                                     PoleTreatment::cap};
   constexpr ToleranceMeasure measures[] = {ToleranceMeasure::max, ToleranceMeasure::p99,
                                            ToleranceMeasure::p95, ToleranceMeasure::rms};
   if (!a.method.empty())
@@ -46,7 +47,7 @@ FitJobOptions job_options(const FitArgs& a, FitJobOptions o) {
         methods[parse_choice("--method", a.method, {"auto", "polar", "spherical", "cylindrical"})];
   if (!a.closed.empty())
     o.closure = closures[parse_choice("--closed", a.closed, {"auto", "yes", "no"})];
-  if (!a.pole.empty()) o.pole = poles[parse_choice("--pole", a.pole, {"none", "g1", "cap"})];
+  if (!a.pole.empty()) o.pole = poles[parse_choice("--pole", a.pole, {"none", "g0", "g1", "cap"})];
   if (!a.degree.empty()) o.degree = parse_int_pair("--degree", a.degree, 1, 9);
   if (!a.ctrl.empty() && !a.tol.empty())
     throw InputError("--ctrl and --tol: give one (a fixed control net or a tolerance to refine to)");
@@ -150,7 +151,8 @@ void add_fit_command(CLI::App& app) {
   cmd->add_option("--closed", args->closed, "auto|yes|no: close the fit around the axis (default auto)");
   cmd->add_option(
       "--pole", args->pole,
-      "none|g1|cap: both poles of a spherical fit (default: G0 where the data reaches a pole)");
+      "none|g0|g1|cap: both poles of a spherical fit (default: G0 where the data reaches a "
+      "pole)");
   cmd->add_option("--degree", args->degree,
                   "p[,q]: degrees of F along u (φ or z) and v (θ); a curve uses the last");
   cmd->add_option("--ctrl", args->ctrl, "n[,m]: control values of F along u and v (default 12)");

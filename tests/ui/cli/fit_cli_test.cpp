@@ -338,6 +338,18 @@ TEST(Cli, FitWarnsAboutAnExtrapolatedPole) {
             r.err);
 }
 
+// --pole takes every treatment a project can state, g0 included, over the whole cloud's poles.
+TEST(Cli, FitPoleOptionTakesG0) {
+  const auto dir = scratch_dir();
+  const Outcome r = polarform(
+      "fit " + example("scans/sphere_like.xyz") + " --pole g0 -q --out " + (dir / "g0").string(),
+      dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json report = read_json(dir / "g0/report.json");
+  EXPECT_EQ(report["poles"]["north"]["treatment"], "g0");
+  EXPECT_EQ(report["poles"]["south"]["treatment"], "g0");
+}
+
 TEST(Cli, BadOptionsExitTwo) {
   const auto dir = scratch_dir();
   const std::string scan = example("scans/vase.xyz");
