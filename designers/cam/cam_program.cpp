@@ -160,7 +160,7 @@ std::vector<double> CamProgram::smoothness_breaks() const {
     if (seg.start() > 0) out.push_back(seg.start());
     const SegmentSpec& spec = seg.spec();
     if (spec.kind == SegmentKind::Dwell) continue;
-    const std::vector<double> joins = spec.law == MotionLaw::Scca ? scca_joins(spec.scca)
+    const std::vector<double> joins = spec.law == MotionLaw::Scca ? SccaLaw(spec.scca).joins()
                                       : is_standard_law(spec.law) ? law_joins(spec.law)
                                                                   : std::vector<double>{};
     for (double x : joins) out.push_back(seg.start() + x * (seg.end() - seg.start()));

@@ -31,13 +31,6 @@ void validate(const SegmentSpec& spec) {
     fail(spec, "lift must be a positive number of mm for a " + std::string(segment_kind_name(spec.kind)) +
                    ", got " + number_text(spec.lift));
   if (motion_law_name(spec.law) == "unknown") fail(spec, "unknown motion law");
-  if (spec.law == MotionLaw::Scca) {
-    try {
-      check_scca(spec.scca);
-    } catch (const InputError& e) {
-      fail(spec, e.what());
-    }
-  }
   if (spec.law == MotionLaw::Polynomial || spec.law == MotionLaw::BSpline) {
     if (spec.constrained_order < 0 || spec.constrained_order > 3)
       fail(spec, "constrained_order " + std::to_string(spec.constrained_order) + " outside [0, 3]");
@@ -90,7 +83,11 @@ MotionSegment::MotionSegment(SegmentSpec spec, double start_level) : spec_(std::
   } else if (is_standard_law(spec_.law)) {
     shape_ = StandardLaw{spec_.law, signed_lift, std::nullopt};
   } else if (spec_.law == MotionLaw::Scca) {
-    shape_ = StandardLaw{spec_.law, signed_lift, spec_.scca};
+    try {
+      shape_ = StandardLaw{spec_.law, signed_lift, SccaLaw(spec_.scca)};
+    } catch (const InputError& e) {
+      fail(spec_, e.what());
+    }
   } else {
     const int order = spec_.constrained_order;
     const std::vector<double> a = endpoint_values(start_level_, spec_.at_start, order);
@@ -113,7 +110,7 @@ void MotionSegment::derivatives(double theta, int d, double* out) const {
     const double beta = spec_.end - spec_.start;
     const double x = (theta - spec_.start) / beta;
     if (law->scca)
-      scca_law(*law->scca, x, d, out);
+      law->scca->derivatives(x, d, out);
     else
       standard_law(law->law, x, d, out);
     double scale = law->signed_lift;  // h / β^k

@@ -75,7 +75,7 @@ class MotionSegment {
   struct StandardLaw {
     MotionLaw law;
     double signed_lift;
-    std::optional<SccaParameters> scca;  // the SCCA law's parameters
+    std::optional<SccaLaw> scca;  // the SCCA law, integrated once
   };
   SegmentSpec spec_;
   double start_level_ = 0.0;

@@ -18,14 +18,28 @@ struct SccaParameters {
   bool operator==(const SccaParameters&) const = default;
 };
 
-// Throws InputError unless b, c, d >= 0 are finite and add up to 1 (to 1e-9).
-void check_scca(const SccaParameters& p);
+// The law of given fractions, its zones integrated once so that evaluating it is a zone lookup and
+// a closed form.
+class SccaLaw {
+ public:
+  // Throws InputError unless b, c, d >= 0 are finite and add up to 1 (to 1e-9).
+  explicit SccaLaw(const SccaParameters& parameters);
 
-// S(x), S'(x), …, S^(k)(x) (k <= 4) of the normalised law, S(0) = 0, S(1) = 1, x clamped to
-// [0, 1]: the acceleration integrated zone by zone in closed form, scaled so that S(1) = 1.
-void scca_law(const SccaParameters& p, double x, int k, double* out);
+  const SccaParameters& parameters() const { return parameters_; }
+  // S(x), S'(x), …, S^(k)(x) (k <= 4) with S(0) = 0, S(1) = 1; x clamped to [0, 1].
+  void derivatives(double x, int k, double* out) const;
+  // The x in (0, 1) where the zones join (where the jerk may jump).
+  std::vector<double> joins() const;
 
-// The x in (0, 1) where the zones join (where the jerk may jump).
-std::vector<double> scca_joins(const SccaParameters& p);
+ private:
+  // One zone [x0, x1] of the unscaled acceleration a = A sin(ω t + φ), t = x − x0 (the constant A
+  // when ω = 0), entered with displacement s0 and velocity v0.
+  struct Zone {
+    double x0, x1, A, w, phi, s0, v0;
+  };
+  SccaParameters parameters_;
+  std::vector<Zone> zones_;
+  double scale_ = 1.0;  // 1 / the unscaled S(1)
+};
 
 }  // namespace polarform

@@ -29,7 +29,7 @@ TEST(SccaLaw, SpecialCasesAreTheStandardLaws) {
     for (int i = 0; i <= 2000; ++i) {
       const double x = i / 2000.0;
       double a[5], b[5];
-      scca_law(c.p, x, 4, a);
+      SccaLaw(c.p).derivatives(x, 4, a);
       standard_law(c.law, x, 4, b);
       for (int k = 0; k <= 4; ++k)
         worst[k] = std::max(worst[k], std::abs(a[k] - b[k]) / std::max(1.0, std::abs(b[k])));
@@ -43,28 +43,28 @@ TEST(SccaLaw, SpecialCasesAreTheStandardLaws) {
 // Constant acceleration (0, 1, 0): S = 2x² then 1 − 2(1 − x)²; peak acceleration 4, velocity 2.
 TEST(SccaLaw, ConstantAccelerationAndPeakFactors) {
   double o[5];
-  scca_law({0, 1, 0}, 0.3, 3, o);
+  SccaLaw({0, 1, 0}).derivatives(0.3, 3, o);
   EXPECT_NEAR(o[0], 2 * 0.09, 1e-14);
   EXPECT_NEAR(o[1], 4 * 0.3, 1e-14);
   EXPECT_NEAR(o[2], 4, 1e-14);
-  scca_law({0, 1, 0}, 0.8, 2, o);
+  SccaLaw({0, 1, 0}).derivatives(0.8, 2, o);
   EXPECT_NEAR(o[0], 1 - 2 * 0.04, 1e-14);
   EXPECT_NEAR(o[2], -4, 1e-14);
   // Cycloidal: Cv = 2, Ca = 2π, Cj = 4π²; modified trapezoid Ca = 4.888 (Norton, Table 3-2).
-  scca_law({0.5, 0, 0.5}, 0.5, 1, o);
+  SccaLaw({0.5, 0, 0.5}).derivatives(0.5, 1, o);
   EXPECT_NEAR(o[1], 2, 1e-12);
-  scca_law({0.5, 0, 0.5}, 0.25, 2, o);
+  SccaLaw({0.5, 0, 0.5}).derivatives(0.25, 2, o);
   EXPECT_NEAR(o[2], 2 * kPi, 1e-12);
-  scca_law({0.5, 0, 0.5}, 0.0, 3, o);
+  SccaLaw({0.5, 0, 0.5}).derivatives(0.0, 3, o);
   EXPECT_NEAR(o[3], 4 * kPi * kPi, 1e-12);
-  scca_law({0.25, 0.5, 0.25}, 0.25, 2, o);
+  SccaLaw({0.25, 0.5, 0.25}).derivatives(0.25, 2, o);
   EXPECT_NEAR(o[2], 4.8881, 1e-4);
   // Any member rises from rest to rest: S(1) = 1, S'(0) = S'(1) = 0, symmetric.
   const SccaParameters p{0.3, 0.2, 0.5};
   double start[3], end[3], mid[1];
-  scca_law(p, 0.0, 2, start);
-  scca_law(p, 1.0, 2, end);
-  scca_law(p, 0.5, 0, mid);
+  SccaLaw(p).derivatives(0.0, 2, start);
+  SccaLaw(p).derivatives(1.0, 2, end);
+  SccaLaw(p).derivatives(0.5, 0, mid);
   EXPECT_NEAR(start[1], 0, 1e-14);
   EXPECT_NEAR(end[0], 1, 1e-14);
   EXPECT_NEAR(end[1], 0, 1e-13);
@@ -72,15 +72,14 @@ TEST(SccaLaw, ConstantAccelerationAndPeakFactors) {
 }
 
 TEST(SccaLaw, JoinsAndBadParameters) {
-  const std::vector<double> joins = scca_joins({0.25, 0.5, 0.25});
+  const std::vector<double> joins = SccaLaw({0.25, 0.5, 0.25}).joins();
   ASSERT_EQ(joins.size(), 4u);
   EXPECT_DOUBLE_EQ(joins[0], 0.125);
   EXPECT_DOUBLE_EQ(joins[1], 0.375);
   EXPECT_DOUBLE_EQ(joins[2], 0.625);
   EXPECT_DOUBLE_EQ(joins[3], 0.875);
-  double o[1];
-  EXPECT_THROW(scca_law({0.5, 0.5, 0.5}, 0.5, 0, o), InputError);
-  EXPECT_THROW(scca_law({-0.1, 0.6, 0.5}, 0.5, 0, o), InputError);
+  EXPECT_THROW(SccaLaw({0.5, 0.5, 0.5}), InputError);
+  EXPECT_THROW(SccaLaw({-0.1, 0.6, 0.5}), InputError);
 }
 
 }  // namespace

@@ -82,7 +82,7 @@ TEST(CamProject, SccaLawsAreReadWithTheirFractions) {
   const MotionSegment segment(rise, 0.0);
   double s[3], law[3];
   segment.derivatives(kPi / 4, 2, s);
-  scca_law({0.2, 0.6, 0.2}, 0.25, 2, law);
+  SccaLaw({0.2, 0.6, 0.2}).derivatives(0.25, 2, law);
   EXPECT_NEAR(s[0], 20 * law[0], 1e-12);
   EXPECT_NEAR(s[2], 20 * law[2] / (kPi * kPi), 1e-12);
   EXPECT_NE(error_of(cam(kPlate,
