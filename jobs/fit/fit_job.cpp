@@ -91,7 +91,8 @@ ProfileFit fit_profile(const FitInput& in, const CloudPlane& plane, const FitJob
   const Eigen::Matrix2Xd local = plane.frame.to_local(in.points).topRows(2);
   PolarCurveFit polar = fit_polar_curve(local, po);
   NurbsCurve3d curve = curve_in_space(polar.curve, plane.frame);
-  return {std::move(polar), std::move(curve)};
+  ProfileInterrogation interrogation = interrogate_profile(polar);
+  return {std::move(polar), std::move(curve), std::move(interrogation)};
 }
 
 // A closed pole that creases or rests on no data (SphericalFit::north_check, south_check).

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "designers/scan/cloud_plane.h"
+#include "jobs/fit/profile_interrogation.h"
 #include "jobs/project/fit_project.h"
 #include "src/fit/polar_curve_fit.h"
 #include "src/fit/rotational_fit.h"
@@ -65,6 +66,7 @@ struct FitPreview {
 struct ProfileFit {
   PolarCurveFit polar;
   NurbsCurve3d curve;
+  ProfileInterrogation interrogation;  // of polar.curve: curvature.svg/.csv, report.json
 };
 
 // Stage 3: the fit and the measured point-to-geometry error of every input point.

@@ -225,7 +225,7 @@ json fit_report_fields(const FitJobResult& r) {
   }
   j["warnings"] = r.warnings;
   if (const auto* profile = std::get_if<ProfileFit>(&r.fit))
-    j["interrogation"] = interrogation_json(interrogate_profile(profile->polar));
+    j["interrogation"] = interrogation_json(profile->interrogation);
   return j;
 }
 
@@ -285,10 +285,9 @@ std::map<std::string, std::string> render_fit_outputs(const FitJobResult& r) {
   const std::string preview = svg_document(fit_preview_figure(r));
   content["preview.svg"] = preview;
   if (profile) {
-    const ProfileInterrogation q = interrogate_profile(profile->polar);
-    content["curvature.svg"] =
-        svg_document(profile_curvature_figure(q, "polar angle θ about the centre [deg]"));
-    content["curvature.csv"] = interrogation_csv(q);
+    content["curvature.svg"] = svg_document(
+        profile_curvature_figure(profile->interrogation, "polar angle θ about the centre [deg]"));
+    content["curvature.csv"] = interrogation_csv(profile->interrogation);
   }
   const std::vector<std::string> files = fit_file_list(content);
   const json report = fit_report_json(r, files);

@@ -70,6 +70,7 @@ ScanCamJobResult run_scan_cam_job(const std::filesystem::path& scan, const ScanC
   r.dropped = cloud.dropped;
   r.read_seconds = clock.lap();
   r.scan = naming_input(scan.string(), [&] { return analyse_scanned_cam(cloud.points, so); });
+  r.interrogation = interrogate_profile(r.scan.fit);
   if (r.nominal) {
     r.comparison =
         naming_input(scan.string(), [&] { return compare_to_nominal(r.scan, *r.nominal); });

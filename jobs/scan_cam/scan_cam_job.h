@@ -10,6 +10,7 @@
 
 #include "designers/scan/nominal_comparison.h"
 #include "designers/scan/scanned_cam.h"
+#include "jobs/fit/profile_interrogation.h"
 #include "jobs/project/cam_project.h"
 #include "src/fit/parallel.h"
 
@@ -37,6 +38,7 @@ struct ScanCamJobResult {
   std::optional<PlateCam> nominal;
   std::vector<std::string> warnings;  // from reading the nominal project
   ScannedCam scan;
+  ProfileInterrogation interrogation;  // of scan.fit.curve: curvature.svg/.csv, report.json
   std::optional<NominalComparison> comparison;
   std::optional<double> tolerance;
   bool within_tolerance = true;  // the profile's normal deviation within ±tolerance

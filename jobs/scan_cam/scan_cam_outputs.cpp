@@ -217,7 +217,7 @@ json scan_cam_report_json(const ScanCamJobResult& r, const std::vector<std::stri
       j["nominal"]["svaj_difference"][names[k]] = stats(c.svaj_stats[k]);
   }
   if (r.tolerance) j["tolerance"] = {{"band_mm", *r.tolerance}, {"within", r.within_tolerance}};
-  j["interrogation"] = interrogation_json(interrogate_profile(r.scan.fit));
+  j["interrogation"] = interrogation_json(r.interrogation);
   j["warnings"] = r.warnings;
   j["files"] = files;
   j["seconds"] = {{"read", r.read_seconds}, {"total", r.seconds}};
@@ -248,14 +248,13 @@ std::vector<std::string> write_scan_cam_outputs(const ScanCamJobResult& r,
   content["profile.x3d"] = x3d.str(title);
   content["profile.dxf"] = dxf.str();
   content["svaj.csv"] = svaj_csv(r);
-  content["curvature.csv"] = interrogation_csv(interrogate_profile(r.scan.fit));
+  content["curvature.csv"] = interrogation_csv(r.interrogation);
   std::map<std::string, std::string> svgs = {
       {"svaj.svg", svg_document(scan_svaj_figure(r))},
       {"deviation.svg", svg_document(scan_deviation_figure(r))},
       {"profile.svg", svg_document(scan_profile_figure(r))},
-      {"curvature.svg",
-       svg_document(profile_curvature_figure(interrogate_profile(r.scan.fit),
-                                             "polar angle ψ of the contour, cam frame [deg]"))}};
+      {"curvature.svg", svg_document(profile_curvature_figure(
+                            r.interrogation, "polar angle ψ of the contour, cam frame [deg]"))}};
   if (r.comparison) {
     svgs["svaj_difference.svg"] = svg_document(scan_svaj_difference_figure(r));
     content["deviation.csv"] = deviation_csv(*r.comparison);
