@@ -74,31 +74,42 @@ std::string svaj_csv(const CamDesignStage& design, const CamAnalysisStage& analy
   return csv.str();
 }
 
+std::vector<std::pair<std::string, std::string>> pairs(const std::vector<KeyFigure>& figures) {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const KeyFigure& f : figures) out.emplace_back(f.name, f.value);
+  return out;
+}
+
+// What a report opens with (jobs/cam/cam_key_figures.h): the design, the key results (with
+// `extra` rows), the warnings and the motion program's continuity issues.
+void add_design_and_results(HtmlReport& html, const CamDesignStage& design,
+                            const CamAnalysisStage& analysis, const CamConversionStage* conversion,
+                            std::vector<std::pair<std::string, std::string>> extra = {}) {
+  html.add_heading("Design");
+  html.add_key_figures(pairs(cam_design_inputs(design)));
+  html.add_heading("Key results");
+  std::vector<std::pair<std::string, std::string>> key =
+      pairs(cam_key_results(design, analysis, conversion));
+  key.insert(key.end(), extra.begin(), extra.end());
+  html.add_key_figures(key);
+  for (const std::string& w : analysis.warnings) html.add_paragraph("Warning: " + w);
+  if (conversion)
+    for (const std::string& w : conversion->warnings) html.add_paragraph("Warning: " + w);
+  if (!design.continuity.empty()) {
+    html.add_heading("Continuity of the motion program");
+    for (const ContinuityIssue& issue : design.continuity) html.add_paragraph(issue.message());
+  }
+}
+
 std::string html_report(const CamJobResult& r, const CamOutputOptions& o, const json& report,
                         const std::map<std::string, std::string>& svgs) {
   HtmlReport html("polarform cam report: " + o.design_name);
   const PolarConversion& c = r.conversion.conversion;
   const bool plate = r.plate();
-  // First what was asked and what came of it (jobs/cam/cam_key_figures.h), then the details.
-  const auto pairs = [](const std::vector<KeyFigure>& figures) {
-    std::vector<std::pair<std::string, std::string>> out;
-    for (const KeyFigure& f : figures) out.emplace_back(f.name, f.value);
-    return out;
-  };
-  html.add_heading("Design");
-  html.add_key_figures(pairs(cam_design_inputs(r.design)));
-  html.add_heading("Key results");
-  std::vector<std::pair<std::string, std::string>> key =
-      pairs(cam_key_results(r.design, r.analysis, &r.conversion));
-  key.emplace_back("max tangent jump at arc junctions",
-                   format_trimmed(c.max_tangent_jump * kDegreesPerRadian, 6) + "°");
-  html.add_key_figures(key);
-  for (const auto* list : {&r.analysis.warnings, &r.conversion.warnings})
-    for (const std::string& w : *list) html.add_paragraph("Warning: " + w);
-  if (!r.design.continuity.empty()) {
-    html.add_heading("Continuity of the motion program");
-    for (const ContinuityIssue& issue : r.design.continuity) html.add_paragraph(issue.message());
-  }
+  // First what was asked and what came of it, then the details.
+  add_design_and_results(html, r.design, r.analysis, &r.conversion,
+                         {{"max tangent jump at arc junctions",
+                           format_trimmed(c.max_tangent_jump * kDegreesPerRadian, 6) + "°"}});
   html.add_heading("Motion");
   html.add_svg(svgs.at("svaj.svg"), "Displacement, velocity, acceleration and jerk against cam angle; grey lines mark segment boundaries.");
   html.add_svg(svgs.at("analysis.svg"), plate ? "Pressure angle and radii of curvature." : "Pressure angle at the pitch radius and track height.");
@@ -151,26 +162,13 @@ std::string infeasible_html_report(const InfeasibleCam& cam, const CamOutputOpti
                                    const json& report,
                                    const std::map<std::string, std::string>& svgs) {
   HtmlReport html("polarform cam report: " + o.design_name + " (INFEASIBLE)");
-  const auto pairs = [](const std::vector<KeyFigure>& figures) {
-    std::vector<std::pair<std::string, std::string>> out;
-    for (const KeyFigure& f : figures) out.emplace_back(f.name, f.value);
-    return out;
-  };
   html.add_heading("INFEASIBLE design: no profile was written");
   html.add_paragraph(cam.reason);
   html.add_paragraph(
       "The contour undercuts where analysis.svg shades the cam angles in its radius-of-curvature "
       "panel: there the cutter would remove material the contour needs. Increase the base "
       "radius, lengthen the segment or choose a softer law there.");
-  html.add_heading("Design");
-  html.add_key_figures(pairs(cam_design_inputs(cam.design)));
-  html.add_heading("Key results");
-  html.add_key_figures(pairs(cam_key_results(cam.design, cam.analysis, nullptr)));
-  for (const std::string& w : cam.analysis.warnings) html.add_paragraph("Warning: " + w);
-  if (!cam.design.continuity.empty()) {
-    html.add_heading("Continuity of the motion program");
-    for (const ContinuityIssue& issue : cam.design.continuity) html.add_paragraph(issue.message());
-  }
+  add_design_and_results(html, cam.design, cam.analysis, nullptr);
   html.add_heading("Motion and analyses");
   html.add_svg(svgs.at("analysis.svg"),
                "Pressure angle and radii of curvature; the undercut ranges shaded.");
