@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "src/error.h"
+#include "src/nurbs/knots.h"
 
 namespace polarform {
 
@@ -83,7 +84,6 @@ ExactHead exact_head(const HeadPreset& preset, double radius) {
   }
   out.meridian = joined(arcs);
   out.arcs = static_cast<int>(arcs.size());
-  out.apex_parameter = static_cast<double>(arcs.size()) / 2;
   return out;
 }
 
@@ -92,10 +92,11 @@ double exact_head_deviation(const NurbsCurve2d& meridian, const HeadShape& shape
     throw InputError("exact head deviation: " + std::to_string(samples) +
                      " samples per segment, expected >= 2");
   double worst = 0.0;
-  const int segments = static_cast<int>(meridian.back() - meridian.front());
-  for (int i = 0; i < segments; ++i)
+  const std::vector<Breakpoint> breaks = breakpoints(meridian.knots());
+  for (std::size_t i = 0; i + 1 < breaks.size(); ++i)
     for (int k = 0; k < samples; ++k) {
-      const Eigen::Vector2d p = meridian.point(meridian.front() + i + k / (samples - 1.0));
+      const double a = breaks[i].value, b = breaks[i + 1].value;
+      const Eigen::Vector2d p = meridian.point(a + (b - a) * k / (samples - 1.0));
       const double theta = std::atan2(p.y(), p.x());
       worst = std::max(worst, std::abs(p.norm() - shape.profile(std::clamp(theta, 0.0, kPi))));
     }

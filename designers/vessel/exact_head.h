@@ -13,8 +13,9 @@ namespace polarform {
 struct ExactHead {
   HeadShape shape;              // the closed form: pieces, depth, curvature jumps
   NurbsCurve2d meridian;        // degree 2, junction A → apex → junction B, (x, z)
-  int arcs = 0;                 // rational quadratic segments (2 per half for a torispherical head)
-  double apex_parameter = 0.0;  // the knot at the apex
+  // Rational quadratic segments, on [i, i + 1] each (2 per half for a torispherical head): the
+  // apex is at the parameter arcs / 2.
+  int arcs = 0;
 };
 
 // Hemispherical: two circular quarters; ellipsoidal: two elliptic quarters (semi-axes radius and
@@ -23,7 +24,7 @@ struct ExactHead {
 ExactHead exact_head(const HeadPreset& preset, double radius);
 
 // The largest |ρ − R(θ)| of the meridian against the closed form R(θ) of `shape`, at `samples`
-// equally spaced parameters of every segment (mm): the measured error of the exact head.
+// equally spaced parameters between every two of its breakpoints (mm): the measured error.
 double exact_head_deviation(const NurbsCurve2d& meridian, const HeadShape& shape, int samples);
 
 }  // namespace polarform
