@@ -103,6 +103,19 @@ std::vector<std::string> warnings_for(const VesselSolution& s, const VesselDesig
   return out;
 }
 
+// The head's geometry at the junction and the apex, and its membrane stresses, from out.profile.
+void analyse_head(VesselSolution& out, const VesselLoad& load) {
+  double a[3], apex[2];
+  out.profile.derivatives(0.0, 2, a);
+  out.profile.derivatives(kPi / 2, 1, apex);
+  out.depth = apex[0];
+  out.junction_radius = a[0];
+  out.junction_curvature = polar_curvature(a[0], a[1], a[2]);
+  out.junction_slope = std::atan2(a[1], a[0]);
+  out.apex_slope = std::atan2(apex[1], apex[0]);
+  out.stresses = membrane_stresses(out.profile, load);
+}
+
 // The preset head itself: its exact meridian, closed-form curvature and stresses (no synthesis).
 VesselSolution solve_exact_head(const VesselDesign& design, const VesselLoad& load) {
   if (!design.preset) throw InputError("vessel: an exact head needs a <head preset>");
@@ -115,15 +128,7 @@ VesselSolution solve_exact_head(const VesselDesign& design, const VesselLoad& lo
   const HeadShape& shape = out.exact->shape;
   out.profile = shape.profile;
   out.curvature = piecewise_curvature(shape);
-  double a[3], apex[2];
-  out.profile.derivatives(0.0, 2, a);
-  out.profile.derivatives(kPi / 2, 1, apex);
-  out.depth = shape.depth;
-  out.junction_radius = a[0];
-  out.junction_curvature = polar_curvature(a[0], a[1], a[2]);
-  out.junction_slope = std::atan2(a[1], a[0]);
-  out.apex_slope = std::atan2(apex[1], apex[0]);
-  out.stresses = membrane_stresses(out.profile, load);
+  analyse_head(out, load);
   out.warnings = warnings_for(out, design);
   return out;
 }
@@ -145,16 +150,9 @@ VesselSolution solve_curvature_design(const VesselDesign& design, const VesselLo
 
   VesselSolution out;
   out.synthesis = synthesize_profile(problem);
-  const BSplineFunction& R = out.synthesis.profile;
-  out.profile = head_polar_function(R);
+  out.profile = head_polar_function(out.synthesis.profile);
   out.curvature = sample_curvature(out.profile, 360);
-  const Eigen::VectorXd at_a = R.derivatives(0.0, 2), at_apex = R.derivatives(kPi / 2, 1);
-  out.depth = at_apex(0);
-  out.junction_radius = at_a(0);
-  out.junction_curvature = polar_curvature(at_a(0), at_a(1), at_a(2));
-  out.junction_slope = std::atan2(at_a(1), at_a(0));
-  out.apex_slope = std::atan2(at_apex(1), at_apex(0));
-  out.stresses = membrane_stresses(out.profile, load);
+  analyse_head(out, load);
   if (design.preset) out.preset = compare_with_preset(*design.preset, design, out.profile, load);
   out.warnings = warnings_for(out, design);
   return out;
