@@ -93,7 +93,6 @@ std::string html_report(const VesselJobResult& r, const VesselOutputOptions& o, 
       format_trimmed(stresses["head"]["min_hoop_stress_mpa"].get<double>(), 4) + " MPa");
   key.emplace_back("compressive hoop stress", s.stresses.compressive_hoop.empty() ? "none" : "YES");
   if (s.code) {
-    const json& code = report["code"];
     key.emplace_back("ASME VIII-1 MAWP", format_trimmed(s.code->mawp, 4) + " MPa");
     key.emplace_back("required thickness, shell",
                      format_trimmed(s.code->shell.required_thickness, 4) + " mm (" +
@@ -101,7 +100,7 @@ std::string html_report(const VesselJobResult& r, const VesselOutputOptions& o, 
     key.emplace_back("required thickness, head",
                      s.code->head ? format_trimmed(s.code->head->required_thickness, 4) + " mm (" +
                                         s.code->head->thickness_formula + ")"
-                                  : code["head_note"].get<std::string>());
+                                  : s.code->head_note);
     key.emplace_back("wall " + format_trimmed(r.solved.design.thickness, 4) + " mm",
                      s.code->thickness_sufficient ? "sufficient" : "TOO THIN");
   }

@@ -110,9 +110,8 @@ Figure stress_figure(const VesselSolveStage& r) {
       "at the right)";
   plot.y_label = "membrane stress [MPa]";
   // The head fills the width: of the cylinder, whose membrane stresses are constant, only a stub.
-  double head_length = 0;
-  for (const StressSample& k : s.stresses.samples) head_length = std::max(head_length, k.s);
-  if (head_length > 0) plot.x_range = AxisRange{-kCylinderShare * head_length, head_length};
+  const double head_length = s.stresses.samples.back().s;  // at the apex, the last sample
+  plot.x_range = AxisRange{-kCylinderShare * head_length, head_length};
   if (s.preset) {
     const StressProfile& preset = s.preset->stresses;
     plot.add(stress_series("σφ preset", preset, false, Series::Style::dashed, "#56b4e9"));
