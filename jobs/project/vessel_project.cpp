@@ -72,15 +72,16 @@ EndCondition read_end(const XmlElementReader& r, double radius) {
 }
 
 // `curvature_inputs`: the vessel has <curvature>, <end> or <synthesis> elements, which ask for a
-// curvature design unless design="exact" says otherwise (then <curvature> is an error).
+// curvature design unless design="exact" says otherwise; `has_curvatures`: it has <curvature>
+// elements, which an exact head refuses.
 HeadPreset read_head(const XmlElementReader& r, double radius, int& targets, bool curvature_inputs,
-                     bool has_targets, HeadDesign& design) {
+                     bool has_curvatures, HeadDesign& design) {
   const bool synthesised = curvature_inputs || r.has("targets");
   design =
       r.choice("design", {"exact", "curvature"}, synthesised ? "curvature" : "exact") == "exact"
           ? HeadDesign::exact
           : HeadDesign::curvature;
-  if (design == HeadDesign::exact && has_targets)
+  if (design == HeadDesign::exact && has_curvatures)
     r.fail("design", "design=\"curvature\" with <curvature> targets (an exact head takes none)");
   HeadPreset h;
   const std::string preset = r.choice("preset", {"hemispherical", "ellipsoidal", "torispherical"});
