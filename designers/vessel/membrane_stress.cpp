@@ -90,10 +90,12 @@ std::vector<double> head_angles(const PolarFunction& head, const VesselLoad& loa
   const double noise = 1e-9 * load.pressure * load.radius;  // N/mm: rounding, not an extremum
   for (const bool hoop : {true, false}) {
     const std::function<double(double)> f = stress(hoop);
+    std::vector<double> values;  // f at every angle, once
+    for (const double theta : angles) values.push_back(f(theta));
     for (std::size_t i = 1; i + 1 < angles.size(); ++i) {
-      const double a = angles[i - 1], m = angles[i], b = angles[i + 1];
+      const double a = angles[i - 1], b = angles[i + 1];
       if (across_joint(a, b)) continue;
-      const double fa = f(a), fm = f(m), fb = f(b);
+      const double fa = values[i - 1], fm = values[i], fb = values[i + 1];
       if (fm < std::min(fa, fb) - noise) extrema.push_back(golden_extremum(f, a, b, true));
       if (fm > std::max(fa, fb) + noise) extrema.push_back(golden_extremum(f, a, b, false));
     }
