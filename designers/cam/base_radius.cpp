@@ -13,6 +13,10 @@ namespace polarform {
 // same way by hand).
 BaseRadiusResult minimum_base_radius(const CamProgram& program, const Follower& follower, Rotation rotation,
                                      const BaseRadiusRequirements& req, std::span<const double> thetas) {
+  if (is_oscillating(follower.kind))
+    throw InputError(
+        "minimum base radius: translating followers only (an oscillating arm's reach bounds Rb "
+        "from above; adjust Rb, the pivot and the arm together)");
   const bool flat = follower.kind == FollowerKind::FlatFaced;
   if (!flat && !(req.max_pressure_angle > 0 && req.max_pressure_angle < std::numbers::pi / 2))
     throw InputError("minimum base radius: max_pressure_angle must be in (0°, 90°)");
@@ -37,7 +41,7 @@ BaseRadiusResult minimum_base_radius(const CamProgram& program, const Follower& 
   // Below `lo` the follower does not fit (|e| >= Rp) or Rb <= 0.
   double lo = flat ? 0.0
                    : std::max(0.0, std::abs(follower.offset) -
-                                       (follower.kind == FollowerKind::Roller ? follower.roller_radius : 0.0));
+                                       (has_roller(follower.kind) ? follower.roller_radius : 0.0));
   const double scale = std::max({program.stroke(), std::abs(follower.offset), follower.roller_radius, 1.0});
   double hi = std::max(2 * lo, scale);
   while (!feasible(hi, &result)) {

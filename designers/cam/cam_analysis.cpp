@@ -122,10 +122,8 @@ CamAnalysis analyse(const PlateCam& cam, std::span<const double> thetas) {
                             speed(b) > 0 ? bisect_sign_change(speed, dip.theta, b) : b});
   }
 
-  if (cam.follower().kind == FollowerKind::FlatFaced) {
-    const int sigma = cam.sense();
-    const double e = cam.follower().offset;
-    const auto contact = [&](const CamSample& c) { return face_contact_position(c.v, sigma, e); };
+  if (is_flat_faced(cam.follower().kind)) {
+    const auto contact = [](const CamSample& c) { return c.face_contact; };
     const Extremum right = extreme(contact);
     const Extremum left = negated(extreme([&](const CamSample& c) { return -contact(c); }));
     out.face_width = FaceWidth{left.value, right.value};

@@ -19,19 +19,13 @@ struct AngleRange {
   double to = 0.0;
 };
 
-// Contact extents on a flat face, along +x of the fixed frame relative to the follower axis (mm):
-// the contact sits at x = σ s' - e. A face needs at least [left, right] plus clearance.
+// Contact extents on a flat face (CamSample::face_contact, mm): the face needs at least
+// [left, right] plus clearance.
 struct FaceWidth {
   double left = 0.0;
   double right = 0.0;
   double width() const { return right - left; }
 };
-
-// Where a flat face touches the cam, along +x of the fixed frame from the follower axis (mm): the
-// envelope of the face lines touches at x = σ s' − e (σ = ±1 the sense of rotation, e the offset).
-inline double face_contact_position(double ds_dtheta, int sigma, double offset) {
-  return sigma * ds_dtheta - offset;
-}
 
 // Largest |s'|, |s''|, |s'''| (mm/rad^k) and where they occur.
 struct MotionExtrema {

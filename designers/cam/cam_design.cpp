@@ -13,9 +13,17 @@ std::string_view follower_kind_name(FollowerKind kind) {
     case FollowerKind::KnifeEdge: return "knife-edge";
     case FollowerKind::Roller: return "roller";
     case FollowerKind::FlatFaced: return "flat-faced";
+    case FollowerKind::OscillatingRoller:
+      return "oscillating-roller";
+    case FollowerKind::OscillatingFlatFaced:
+      return "oscillating-flat-faced";
   }
   return "unknown";
 }
+
+std::string_view motion_unit(FollowerKind kind) { return is_oscillating(kind) ? "deg" : "mm"; }
+
+std::string_view motion_unit_symbol(FollowerKind kind) { return is_oscillating(kind) ? "°" : "mm"; }
 
 std::string_view rotation_name(Rotation rotation) {
   return rotation == Rotation::CounterClockwise ? "ccw" : "cw";

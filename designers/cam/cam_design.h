@@ -14,7 +14,12 @@ namespace polarform {
 enum class CamType { Plate, Cylindrical };
 
 std::string_view cam_type_name(CamType type);  // "plate", "cylindrical"
-std::string_view follower_kind_name(FollowerKind kind);  // "knife-edge", "roller", "flat-faced"
+// "knife-edge", "roller", "flat-faced", "oscillating-roller", "oscillating-flat-faced"
+std::string_view follower_kind_name(FollowerKind kind);
+// The unit of the follower motion s: "mm" for translating followers, "deg" (the arm's swing) for
+// oscillating ones; motion_unit_symbol gives "mm" or "°" for text.
+std::string_view motion_unit(FollowerKind kind);
+std::string_view motion_unit_symbol(FollowerKind kind);
 std::string_view rotation_name(Rotation rotation);  // "ccw", "cw"
 
 struct CamDesign {

@@ -14,7 +14,7 @@ namespace polarform {
 namespace {
 
 constexpr std::array<const char*, 4> kQuantity = {"displacement", "velocity", "acceleration", "jerk"};
-constexpr std::array<const char*, 4> kUnit = {"mm", "mm/rad", "mm/rad²", "mm/rad³"};
+constexpr std::array<const char*, 4> kPerRadian = {"", "/rad", "/rad²", "/rad³"};
 
 }  // namespace
 
@@ -22,14 +22,14 @@ std::string ContinuityIssue::message() const {
   std::ostringstream out;
   out.imbue(std::locale::classic());
   out.precision(6);
-  out << kQuantity[derivative] << " jumps by " << jump() << " " << kUnit[derivative] << " (" << before_value
-      << " -> " << after_value << ") at " << degrees_text(angle) << " between '" << before << "' and '" << after
-      << "'";
+  out << kQuantity[derivative] << " jumps by " << jump() << (unit == "°" ? "" : " ") << unit
+      << kPerRadian[derivative] << " (" << before_value << " -> " << after_value << ") at "
+      << degrees_text(angle) << " between '" << before << "' and '" << after << "'";
   return out.str();
 }
 
 std::vector<ContinuityIssue> check_continuity(const CamProgram& program, int highest_derivative,
-                                              double relative_tolerance) {
+                                              double relative_tolerance, std::string_view unit) {
   if (highest_derivative < 0 || highest_derivative > 3)
     throw InputError("continuity check: highest derivative " + std::to_string(highest_derivative) + " outside [0, 3]");
   const std::vector<MotionSegment>& segs = program.segments();
@@ -43,7 +43,8 @@ std::vector<ContinuityIssue> check_continuity(const CamProgram& program, int hig
     for (int k = 0; k <= highest_derivative; ++k) {
       const double scale = std::max({1.0, std::abs(left[k]), std::abs(right[k])});
       if (std::abs(right[k] - left[k]) > relative_tolerance * scale)
-        issues.push_back({before.name(), after.name(), after.start(), k, left[k], right[k]});
+        issues.push_back(
+            {before.name(), after.name(), after.start(), k, left[k], right[k], std::string(unit)});
     }
   }
   return issues;

@@ -1,5 +1,6 @@
 // Jet: a quantity with its exact derivatives 0..order (order <= 4) with respect to one parameter,
-// and the arithmetic that propagates them (Leibniz rule, reciprocal and square-root recurrences).
+// and the arithmetic that propagates them (Leibniz rule, reciprocal and square-root recurrences,
+// Faà di Bruno's formula for sine and cosine).
 // The cam geometry composes follower and rotation formulas with it, so every curve point, polar
 // angle and curvature comes with exact derivatives instead of finite differences.
 #pragma once
@@ -33,6 +34,8 @@ class Jet {
   friend Jet operator+(const Jet& a, double c);
   friend Jet operator*(double c, const Jet& a);
   friend Jet sqrt(const Jet& a);
+  friend Jet sin(const Jet& a);
+  friend Jet cos(const Jet& a);
 
  private:
   std::array<double, kMaxOrder + 1> d_{};
@@ -113,6 +116,35 @@ inline Jet sqrt(const Jet& a) {
     h.d_[k] = sum / (2.0 * h.d_[0]);
   }
   return h;
+}
+
+namespace jet_detail {
+
+// f(a) from f, f', ..., f'''' at a's value by Faà di Bruno's formula (orders <= 4).
+inline Jet compose(const double* f, const Jet& a) {
+  Jet h(f[0], a.order());
+  const double g1 = a.order() >= 1 ? a[1] : 0, g2 = a.order() >= 2 ? a[2] : 0;
+  const double g3 = a.order() >= 3 ? a[3] : 0, g4 = a.order() >= 4 ? a[4] : 0;
+  const double d[5] = {f[0], f[1] * g1, f[2] * g1 * g1 + f[1] * g2,
+                       f[3] * g1 * g1 * g1 + 3 * f[2] * g1 * g2 + f[1] * g3,
+                       f[4] * g1 * g1 * g1 * g1 + 6 * f[3] * g1 * g1 * g2 +
+                           f[2] * (3 * g2 * g2 + 4 * g1 * g3) + f[1] * g4};
+  for (int k = 1; k <= a.order(); ++k) h[k] = d[k];
+  return h;
+}
+
+}  // namespace jet_detail
+
+inline Jet sin(const Jet& a) {
+  const double s = std::sin(a.d_[0]), c = std::cos(a.d_[0]);
+  const double f[5] = {s, c, -s, -c, s};
+  return jet_detail::compose(f, a);
+}
+
+inline Jet cos(const Jet& a) {
+  const double s = std::sin(a.d_[0]), c = std::cos(a.d_[0]);
+  const double f[5] = {c, -s, -c, s, c};
+  return jet_detail::compose(f, a);
 }
 
 }  // namespace polarform

@@ -6,6 +6,7 @@
 
 #include "src/error.h"
 #include "src/number_text.h"
+#include "src/units.h"
 
 namespace polarform {
 namespace {
@@ -39,6 +40,28 @@ double radius(double curvature) {
   return curvature == 0.0 ? std::numeric_limits<double>::infinity() : 1.0 / curvature;
 }
 
+// J v: v turned by +90°.
+Eigen::Vector2d perp(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
+
+double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
+
+// Signed angle turning a into b, radians in (-π, π].
+double angle_between(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return std::atan2(cross(a, b), a.dot(b));
+}
+
+// Angle between the contact normal and the travel direction w of the follower's contact point,
+// from the contact's tangent t relative to the cam (fixed frame): atan2(t·w, −σ t·Jw), which is
+// atan2(s' − σe, y0 + s) for a translating follower (Norton, Handbook, pressure angle).
+double pressure_angle_from(const Eigen::Vector2d& t, const Eigen::Vector2d& w, int sigma) {
+  return std::atan2(t.dot(w), -sigma * t.dot(perp(w)));
+}
+
+// The arm angle a = κ s π/180 (radians) as a jet from s in degrees.
+Jet arm_angle(const Jet& s, int swing_sign) { return (swing_sign * kRadiansPerDegree) * s; }
+
 }  // namespace
 
 PlateCam::PlateCam(CamProgram program, Follower follower, double base_radius, Rotation rotation)
@@ -50,13 +73,94 @@ PlateCam::PlateCam(CamProgram program, Follower follower, double base_radius, Ro
       (!std::isfinite(follower_.roller_radius) || !(follower_.roller_radius > 0)))
     throw InputError("plate cam: roller radius must be a positive number of mm, got " +
                      number_text(follower_.roller_radius));
+  if (follower_.kind == FollowerKind::OscillatingRoller &&
+      (!std::isfinite(follower_.roller_radius) || !(follower_.roller_radius > 0)))
+    throw InputError("plate cam: roller radius must be a positive number of mm, got " +
+                     number_text(follower_.roller_radius));
+  if (is_oscillating(follower_.kind)) {
+    place_pivot();
+    check_arm_swing();
+    return;
+  }
   if (follower_.kind != FollowerKind::FlatFaced && !(std::abs(follower_.offset) < prime_radius()))
     throw InputError("plate cam: follower offset |e| = " + number_text(std::abs(follower_.offset)) +
                      " mm must be below the prime radius " + number_text(prime_radius()) + " mm");
 }
 
+// The pivot from d and L (roller: the triangle cam centre – pivot – roller centre at rest) or d
+// and f (flat face), on the chosen side; κ makes a positive swing move the follower away.
+void PlateCam::place_pivot() {
+  const double d = follower_.pivot_distance;
+  if (!std::isfinite(d) || !(d > 0))
+    throw InputError("plate cam: pivot-distance must be a positive number of mm, got " +
+                     number_text(d));
+  if (follower_.pivot_side != 1 && follower_.pivot_side != -1)
+    throw InputError("plate cam: pivot side must be +1 or -1");
+  double y = 0.0;
+  if (follower_.kind == FollowerKind::OscillatingRoller) {
+    const double l = follower_.arm_length, rp = prime_radius();
+    if (!std::isfinite(l) || !(l > 0))
+      throw InputError("plate cam: arm-length must be a positive number of mm, got " +
+                       number_text(l));
+    if (!(std::abs(d - l) < rp && rp < d + l))
+      throw InputError(
+          "plate cam: the arm cannot put the roller on the prime circle: the roller centre "
+          "at rest must be base-radius + roller-radius = " +
+          number_text(rp) + " mm from the cam centre, but pivot-distance " + number_text(d) +
+          " mm and arm-length " + number_text(l) + " mm reach only between " +
+          number_text(std::abs(d - l)) + " and " + number_text(d + l) + " mm");
+    y = (d * d - l * l + rp * rp) / (2 * rp);
+  } else {
+    const double f = follower_.face_offset;
+    if (!std::isfinite(f)) throw InputError("plate cam: face-offset is not finite");
+    y = base_radius_ + f;
+    if (!(std::abs(y) < d))
+      throw InputError(
+          "plate cam: the face cannot touch the base circle: pivot-distance " + number_text(d) +
+          " mm must exceed |base-radius + face-offset| = " + number_text(std::abs(y)) + " mm");
+  }
+  pivot_ = {follower_.pivot_side * std::sqrt(d * d - y * y), y};
+  swing_sign_ = -follower_.pivot_side;
+}
+
+Eigen::Vector2d PlateCam::pivot() const { return pivot_; }
+
+// The reach (roller centre's distance, face line's distance from the cam centre) grows with the
+// swing until the arm (roller: pivot → roller centre; face: its normal) points along the pivot.
+double PlateCam::max_arm_swing() const {
+  if (!is_oscillating(follower_.kind)) return 0.0;
+  const Eigen::Vector2d rest = follower_.kind == FollowerKind::OscillatingRoller
+                                   ? Eigen::Vector2d(Eigen::Vector2d(0, prime_radius()) - pivot_)
+                                   : Eigen::Vector2d(0, 1);
+  return swing_sign_ * angle_between(rest, pivot_) * kDegreesPerRadian;
+}
+
+void PlateCam::check_arm_swing() const {
+  if (!is_oscillating(follower_.kind)) return;
+  double lowest = 0.0, highest = program_.stroke();
+  constexpr int kSamples = 2880;
+  for (int i = 0; i < kSamples; ++i) {
+    const double s = program_(2 * std::numbers::pi * i / kSamples);
+    lowest = std::min(lowest, s), highest = std::max(highest, s);
+  }
+  if (lowest < -1e-9)
+    throw InputError(
+        "plate cam: an oscillating follower's swing must stay >= 0° (the roller or face would "
+        "cut into the base circle), the motion reaches " +
+        number_text(lowest) + "°");
+  const double limit = max_arm_swing();
+  if (!(highest < limit))
+    throw InputError("plate cam: the arm cannot swing the lift: with pivot-distance " +
+                     number_text(follower_.pivot_distance) +
+                     " mm it moves the follower away from the cam for at "
+                     "most " +
+                     number_text(limit) +
+                     "° before lining up with the pivot, but the motion swings it " +
+                     number_text(highest) + "° (reduce the lift or move the pivot)");
+}
+
 double PlateCam::prime_radius() const {
-  return follower_.kind == FollowerKind::Roller ? base_radius_ + follower_.roller_radius : base_radius_;
+  return has_roller(follower_.kind) ? base_radius_ + follower_.roller_radius : base_radius_;
 }
 
 double PlateCam::rest_height() const {
@@ -72,8 +176,15 @@ void PlateCam::curves(const double* s, double theta, int order, Jet* pitch_xy, J
   const int sigma = sense();
   const double e = follower_.offset;
   const Jet S = Jet::from(s, order + 1);
-  const Jet qx(e, order), qy = S + rest_height();
   const RotationJets rotation(theta, sigma, order);
+  if (is_oscillating(follower_.kind)) {
+    Jet reference[2], contact[2];
+    oscillating_curves(S, reference, contour_xy ? contact : nullptr);
+    rotate_into_cam_frame(reference[0], reference[1], rotation, pitch_xy);
+    if (contour_xy) rotate_into_cam_frame(contact[0], contact[1], rotation, contour_xy);
+    return;
+  }
+  const Jet qx(e, order), qy = S + rest_height();
   rotate_into_cam_frame(qx, qy, rotation, pitch_xy);
   if (!contour_xy) return;
   switch (follower_.kind) {
@@ -92,7 +203,67 @@ void PlateCam::curves(const double* s, double theta, int order, Jet* pitch_xy, J
     case FollowerKind::FlatFaced:
       rotate_into_cam_frame(double(sigma) * S.derivative(), S + base_radius_, rotation, contour_xy);
       return;
+    case FollowerKind::OscillatingRoller:
+    case FollowerKind::OscillatingFlatFaced:
+      return;  // handled above
   }
+}
+
+// Fixed-frame follower geometry of an oscillating follower, the arm turned by a = κ s π/180 about
+// the pivot P. Roller (Norton, Handbook, oscillating roller followers): centre Q = P + R(a)(Q0 −
+// P); contact Q − Rr m/|m| with the outward pitch normal m = Q + σ J Q' (the relative velocity Q' −
+// σ J Q turned by σ·90°). Flat face: the line X·n = h, n = R(a)(0, 1), h = P·n − f; its envelope in
+// the turning cam touches at h n + (h'/φ') J n, φ' = a' − σ the line's angular rate relative to the
+// cam.
+void PlateCam::oscillating_curves(const Jet& S, Jet* reference_xy, Jet* contact_xy) const {
+  const int sigma = sense();
+  const Jet a = arm_angle(S, swing_sign_), c = cos(a), s = sin(a);
+  const double px = pivot_.x(), py = pivot_.y();
+  if (follower_.kind == FollowerKind::OscillatingRoller) {
+    const double wx = -px, wy = prime_radius() - py;  // Q0 − P
+    const Jet qx = wx * c + (-wy) * s + px, qy = wx * s + wy * c + py;
+    reference_xy[0] = qx, reference_xy[1] = qy;
+    if (!contact_xy) return;
+    const Jet mx = qx + (-sigma) * qy.derivative(), my = qy + double(sigma) * qx.derivative();
+    const Jet norm = sqrt(mx * mx + my * my);
+    const double rr = follower_.roller_radius;
+    contact_xy[0] = qx + (-rr) * (mx / norm);
+    contact_xy[1] = qy + (-rr) * (my / norm);
+    return;
+  }
+  const Jet h = (-px) * s + py * c + (-follower_.face_offset);  // n = (−sin a, cos a)
+  reference_xy[0] = (-1.0) * (h * s), reference_xy[1] = h * c;
+  if (!contact_xy) return;
+  const Jet lambda = h.derivative() / (a.derivative() + double(-sigma));  // h'/φ'
+  contact_xy[0] = (-1.0) * (h * s) + (-1.0) * (lambda * c);  // J n = (−cos a, −sin a)
+  contact_xy[1] = h * c + (-1.0) * (lambda * s);
+}
+
+// Pressure angle (pressure_angle_from), signed contour speed and the face contact at one sample.
+// The contact point's travel w is κ J (X − P): perpendicular to the line from the pivot.
+void PlateCam::oscillating_sample(const double* s, CamSample& out) const {
+  const int sigma = sense();
+  const Jet S = Jet::from(s, 3);
+  const Jet a = arm_angle(S, swing_sign_);
+  const double ca = std::cos(a[0]), sa = std::sin(a[0]);
+  Jet reference[2], contact[2];
+  oscillating_curves(S, reference, contact);
+  if (follower_.kind == FollowerKind::OscillatingRoller) {
+    const Eigen::Vector2d q(reference[0][0], reference[1][0]), dq(reference[0][1], reference[1][1]);
+    const Eigen::Vector2d t = dq - sigma * perp(q), w = swing_sign_ * perp(q - pivot_);
+    out.pressure_angle = pressure_angle_from(t, w.normalized(), sigma);
+    return;  // contour speed: the roller's generic |P'|(1 − Rr κ_pitch)
+  }
+  const Eigen::Vector2d n(-sa, ca), x(contact[0][0], contact[1][0]);
+  const Eigen::Vector2d w = swing_sign_ * perp(x - pivot_);
+  out.pressure_angle = pressure_angle_from(-sigma * perp(n), w.normalized(), sigma);
+  // Support function of the contour against the line angle φ: ρ = h + d²h/dφ², |dX/dθ| = ρ |φ'|.
+  const Jet h = (-pivot_.x()) * sin(a) + pivot_.y() * cos(a) + (-follower_.face_offset);
+  const Jet phi_rate = a.derivative() + double(-sigma);
+  const Jet lambda = h.derivative() / phi_rate;
+  out.contour_speed = (h[0] + lambda[1] / phi_rate[0]) * (-sigma * phi_rate[0]);
+  // Along J n from the foot of the pivot's perpendicular, positive towards the cam's side.
+  out.face_contact = follower_.pivot_side * (lambda[0] - pivot_.dot(perp(n)));
 }
 
 void PlateCam::pitch(double theta, int d, Eigen::Vector2d* out) const {
@@ -146,6 +317,13 @@ CamSample PlateCam::sample_in_segment(int segment, double theta) const {
   out.contour_curvature = signed_curvature(contour_xy, sigma);
   const double pitch_speed = std::hypot(pitch_xy[0][1], pitch_xy[1][1]);
   switch (follower_.kind) {
+    case FollowerKind::OscillatingRoller:
+      out.contour_speed = pitch_speed * (1.0 - follower_.roller_radius * out.pitch_curvature);
+      oscillating_sample(s, out);
+      break;
+    case FollowerKind::OscillatingFlatFaced:
+      oscillating_sample(s, out);
+      break;
     case FollowerKind::KnifeEdge:
     case FollowerKind::Roller:  // Norton, Handbook (pressure angle): φ = atan((s' - e)/(s + sqrt(Rp² - e²)))
       out.pressure_angle = std::atan2(s[1] - sigma * follower_.offset, rest_height() + s[0]);
@@ -156,6 +334,7 @@ CamSample PlateCam::sample_in_segment(int segment, double theta) const {
     case FollowerKind::FlatFaced:  // Norton, Handbook (flat-faced follower): ρ = Rb + s + s''
       out.pressure_angle = 0.0;
       out.contour_speed = base_radius_ + s[0] + s[2];
+      out.face_contact = sigma * s[1] - follower_.offset;
       break;
   }
   return out;

@@ -87,6 +87,7 @@ void sample_plate(const PlateCam& cam, int per_revolution, MotionCurves& m, Plat
       p.pitch.push_back(pitch[0]);
       p.normal.push_back(n.norm() > 0 ? n.normalized() : contour[0].normalized());
       p.curvature.push_back(c.contour_curvature);
+      p.face_contact.push_back(c.face_contact);
     }
 }
 
@@ -186,14 +187,15 @@ PolarFunction cam_profile_function(const CamDesign& design) {
 CamDesignStage design_cam(const CamProject& project) {
   const CamDesign& d = project.cam;
   CamProgram program = make_program(d);
-  std::vector<ContinuityIssue> continuity = check_continuity(program, 3);
+  std::vector<ContinuityIssue> continuity =
+      check_continuity(program, 3, 1e-9, motion_unit_symbol(d.follower.kind));
   if (d.type == CamType::Plate)
     return {project, std::move(program), std::move(continuity), make_plate_cam(d)};
   return {project, std::move(program), std::move(continuity), make_barrel_cam(d)};
 }
 
 std::optional<double> default_pressure_angle_limit(const CamDesign& cam) {
-  if (cam.follower.kind == FollowerKind::FlatFaced) return std::nullopt;
+  if (is_flat_faced(cam.follower.kind)) return std::nullopt;
   return 30.0 * kRadiansPerDegree;
 }
 
@@ -261,10 +263,13 @@ CamAnalysisStage analyse_cam(const CamDesignStage& design, const CamJobOptions& 
                                : default_pressure_angle_limit(design.project.cam);
   const Extremum worst = a.max_pressure_angle();
   if (!a.pressure_angle_within_limit())
-    a.warnings.push_back("max pressure angle " + degrees_text(worst.value) +
-                         " at θ = " + degrees_text(worst.theta) + " exceeds the limit " +
-                         degrees_text(*a.pressure_angle_limit) +
-                         ": increase the base radius, lengthen the segment or offset the follower");
+    a.warnings.push_back(
+        "max pressure angle " + degrees_text(worst.value) + " at θ = " + degrees_text(worst.theta) +
+        " exceeds the limit " + degrees_text(*a.pressure_angle_limit) +
+        (is_oscillating(design.project.cam.follower.kind)
+             ? ": increase the base radius, lengthen the segment or move the pivot "
+               "(pivot-distance, arm-length, pivot-side)"
+             : ": increase the base radius, lengthen the segment or offset the follower"));
   if (a.dynamics && a.dynamics->jumps)
     a.warnings.push_back("the follower jumps: the contact force falls to " +
                          number_text(a.dynamics->least_force.force) +

@@ -65,6 +65,7 @@ struct PlateCurves {
   std::vector<Eigen::Vector2d> pitch, contour;
   std::vector<Eigen::Vector2d> normal;  // unit, pointing out of the cam
   std::vector<double> curvature;        // signed contour curvature, 1/mm (> 0 convex)
+  std::vector<double> face_contact;     // flat faces: CamSample::face_contact, mm
 };
 
 struct PlateCamAnalysis {

@@ -11,12 +11,21 @@ namespace {
 
 std::string mm(double v) { return number_text(v) + " mm"; }
 
-// "|x| in time units (per radian) at θ": v·ω, a·ω², j·ω³ in m/s^k (the law is in mm/rad^k).
-std::string peak(const Extremum& e, int order, double omega, const char* time_unit,
-                 const char* radian_unit) {
-  const double in_time = e.value * std::pow(omega, order) * 1e-3;
-  return number_text(in_time) + " " + time_unit + " (" + number_text(e.value) + " " + radian_unit +
-         ") at θ = " + degrees_text(e.theta);
+// A follower motion value: mm, or degrees of arm swing for an oscillating follower.
+std::string motion(double v, const CamDesign& d) {
+  return is_oscillating(d.follower.kind) ? number_text(v) + "°" : mm(v);
+}
+
+// "|x| in time units (per radian) at θ": v·ω, a·ω², j·ω³ in m/s^k from a law in mm/rad^k, or in
+// rad/s^k from an arm swing in °/rad^k.
+std::string peak(const Extremum& e, int order, double omega, const CamDesign& d) {
+  const bool arm = is_oscillating(d.follower.kind);
+  const double in_time = e.value * std::pow(omega, order) * (arm ? kRadiansPerDegree : 1e-3);
+  static const char* const kTime[2][3] = {{"m/s", "m/s²", "m/s³"}, {"rad/s", "rad/s²", "rad/s³"}};
+  static const char* const kPerRadian[2][3] = {{"mm/rad", "mm/rad²", "mm/rad³"},
+                                               {"°/rad", "°/rad²", "°/rad³"}};
+  return number_text(in_time) + " " + kTime[arm][order - 1] + " (" + number_text(e.value) + " " +
+         kPerRadian[arm][order - 1] + ") at θ = " + degrees_text(e.theta);
 }
 
 std::string at(const Extremum& e) {
@@ -26,9 +35,15 @@ std::string at(const Extremum& e) {
 
 std::string follower_text(const CamDesign& d) {
   std::string text = std::string(follower_kind_name(d.follower.kind)) + " follower";
-  if (d.follower.kind == FollowerKind::Roller)
-    text += ", roller radius " + mm(d.follower.roller_radius);
+  if (has_roller(d.follower.kind)) text += ", roller radius " + mm(d.follower.roller_radius);
   if (d.follower.offset != 0.0) text += ", offset " + mm(d.follower.offset);
+  if (is_oscillating(d.follower.kind)) {
+    text += ", pivot " + mm(d.follower.pivot_distance) + " from the cam centre (" +
+            (d.follower.pivot_side > 0 ? "right" : "left") + ")";
+    text += d.follower.kind == FollowerKind::OscillatingRoller
+                ? ", arm length " + mm(d.follower.arm_length)
+                : ", face offset " + mm(d.follower.face_offset);
+  }
   return text;
 }
 
@@ -54,7 +69,7 @@ std::vector<KeyFigure> cam_design_inputs(const CamDesignStage& design) {
       if (spec.law == MotionLaw::Scca)
         value += " (b " + number_text(spec.scca.b) + ", c " + number_text(spec.scca.c) + ", d " +
                  number_text(spec.scca.d) + ")";
-      value += ", lift " + mm(spec.lift);
+      value += ", lift " + motion(spec.lift, d);
     }
     value += ", θ " + degrees_text(spec.start) + " to " + degrees_text(spec.end);
     out.push_back({"segment '" + s.name() + "'", value});
@@ -65,13 +80,14 @@ std::vector<KeyFigure> cam_design_inputs(const CamDesignStage& design) {
 std::vector<KeyFigure> cam_key_results(const CamDesignStage& design,
                                        const CamAnalysisStage& analysis,
                                        const CamConversionStage* conversion) {
-  const double omega = angular_speed(design.project.cam.rpm);
+  const CamDesign& cam = design.project.cam;
+  const double omega = angular_speed(cam.rpm);
   const MotionExtrema& m = analysis.motion_extrema();
-  std::vector<KeyFigure> out = {
-      {"stroke", mm(design.program.stroke())},
-      {"peak velocity", peak(m.velocity, 1, omega, "m/s", "mm/rad")},
-      {"peak acceleration", peak(m.acceleration, 2, omega, "m/s²", "mm/rad²")},
-      {"peak jerk", peak(m.jerk, 3, omega, "m/s³", "mm/rad³")}};
+  std::vector<KeyFigure> out = {{is_oscillating(cam.follower.kind) ? "arm swing" : "stroke",
+                                 motion(design.program.stroke(), cam)},
+                                {"peak velocity", peak(m.velocity, 1, omega, cam)},
+                                {"peak acceleration", peak(m.acceleration, 2, omega, cam)},
+                                {"peak jerk", peak(m.jerk, 3, omega, cam)}};
   const Extremum pressure = analysis.max_pressure_angle();
   std::string pressure_text =
       degrees_text(pressure.value) + " at θ = " + degrees_text(pressure.theta);
@@ -82,7 +98,7 @@ std::vector<KeyFigure> cam_key_results(const CamDesignStage& design,
                          : ", limit " + degrees_text(*analysis.pressure_angle_limit);
   out.push_back({"max pressure angle", pressure_text});
   if (const auto* p = std::get_if<PlateCamAnalysis>(&analysis.cam)) {
-    if (design.project.cam.follower.kind == FollowerKind::Roller)
+    if (has_roller(cam.follower.kind))
       out.push_back(
           {"min radius of curvature, pitch curve", at(p->analysis.min_convex_pitch_radius)});
     out.push_back({"min radius of curvature, contour", at(p->analysis.min_convex_contour_radius)});
@@ -93,6 +109,12 @@ std::vector<KeyFigure> cam_key_results(const CamDesignStage& design,
         undercut += " " + degrees_text(u.from) + " to " + degrees_text(u.to);
     }
     out.push_back({"undercut", undercut});
+    if (const std::optional<FaceWidth>& face = p->analysis.face_width)
+      out.push_back({"face width needed",
+                     mm(face->width()) + ": contact from " + mm(face->left) + " to " +
+                         mm(face->right) +
+                         (is_oscillating(cam.follower.kind) ? " along the face from the pivot"
+                                                            : " from the follower axis")});
   }
   if (const auto& dyn = analysis.dynamics) {
     std::string force =

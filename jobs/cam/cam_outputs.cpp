@@ -30,15 +30,17 @@ namespace {
 
 using json = nlohmann::ordered_json;
 
+// s in mm, or in degrees of arm swing for an oscillating follower.
 std::string svaj_csv(const CamDesignStage& design, const CamAnalysisStage& analysis) {
+  const std::string u(motion_unit(design.project.cam.follower.kind));
   std::vector<std::string> headers = {"cam angle theta [deg]",
-                                      "s [mm]",
-                                      "v [mm/s]",
-                                      "a [mm/s^2]",
-                                      "j [mm/s^3]",
-                                      "ds/dtheta [mm/rad]",
-                                      "d2s/dtheta2 [mm/rad^2]",
-                                      "d3s/dtheta3 [mm/rad^3]"};
+                                      "s [" + u + "]",
+                                      "v [" + u + "/s]",
+                                      "a [" + u + "/s^2]",
+                                      "j [" + u + "/s^3]",
+                                      "ds/dtheta [" + u + "/rad]",
+                                      "d2s/dtheta2 [" + u + "/rad^2]",
+                                      "d3s/dtheta3 [" + u + "/rad^3]"};
   const auto* plate = std::get_if<PlateCamAnalysis>(&analysis.cam);
   const auto* cylindrical = std::get_if<CylindricalCamAnalysis>(&analysis.cam);
   if (plate)

@@ -80,19 +80,16 @@ void add_circle(Plot& plot, std::string label, double radius, Series::Style styl
 }
 
 bool flat_faced(const CamDesignStage& d) {
-  return std::holds_alternative<PlateCam>(d.cam) &&
-         d.project.cam.follower.kind == FollowerKind::FlatFaced;
+  return std::holds_alternative<PlateCam>(d.cam) && is_flat_faced(d.project.cam.follower.kind);
 }
 
-// What matters for a flat face instead of its fixed pressure angle: where along the face the cam
-// touches it (from the follower axis), and the extent the face must have (the analysis's).
+// What matters for a flat face beside its pressure angle: where along the face the cam touches it
+// (CamSample::face_contact), and the extent the face must have (the analysis's).
 void show_face_contact(Plot& plot, const CamDesignStage& d, const CamAnalysisStage& a,
-                       std::vector<double> x_deg, const std::vector<double>& ds_dtheta) {
-  plot.y_label = "contact on the face [mm]";
-  const int sigma = sense(d.project.cam.rotation);
-  const double e = d.project.cam.follower.offset;
-  std::vector<double> contact;
-  for (double v : ds_dtheta) contact.push_back(face_contact_position(v, sigma, e));
+                       std::vector<double> x_deg, std::vector<double> contact) {
+  plot.y_label = is_oscillating(d.project.cam.follower.kind)
+                     ? "contact on the face from the pivot [mm]"
+                     : "contact on the face [mm]";
   plot.add(series("", std::move(x_deg), std::move(contact)));
   const std::optional<FaceWidth>& width = std::get<PlateCamAnalysis>(a.cam).analysis.face_width;
   if (!width) return;
@@ -111,17 +108,23 @@ Figure svaj_figure(const CamDesignStage& d, const CamAnalysisStage& a, const Sva
   f.shared_x = true;
   const MotionCurves& m = a.curves;
   const std::vector<double> x = in_degrees(m.theta);
-  // At constant cam speed ω, dᵏs/dtᵏ = ωᵏ dᵏs/dθᵏ; accelerations and jerks in metres.
+  // At constant cam speed ω, dᵏs/dtᵏ = ωᵏ dᵏs/dθᵏ; accelerations and jerks in metres. An
+  // oscillating follower's motion is the arm's swing: °/rad^k of cam angle, rad/s^k in time.
   const double w = angular_speed(d.project.cam.rpm);
-  const double time_scale[4] = {1, w, w * w * kMetresPerMillimetre,
-                                w * w * w * kMetresPerMillimetre};
-  const char* per_radian[4] = {"s [mm]", "v [mm/rad]", "a [mm/rad²]", "j [mm/rad³]"};
-  const char* in_time[4] = {"s [mm]", "v [mm/s]", "a [m/s²]", "j [m/s³]"};
+  const bool arm = is_oscillating(d.project.cam.follower.kind);
+  const double unit = arm ? kRadiansPerDegree : kMetresPerMillimetre;
+  const double time_scale[4] = {1, w * (arm ? kRadiansPerDegree : 1.0), w * w * unit,
+                                w * w * w * unit};
+  const char* per_radian[2][4] = {{"s [mm]", "v [mm/rad]", "a [mm/rad²]", "j [mm/rad³]"},
+                                  {"swing [°]", "v [°/rad]", "a [°/rad²]", "j [°/rad³]"}};
+  const char* in_time[2][4] = {
+      {"s [mm]", "v [mm/s]", "a [m/s²]", "j [m/s³]"},
+      {"swing [°]", "ω arm [rad/s]", "α arm [rad/s²]", "jerk arm [rad/s³]"}};
   const std::vector<double>* values[4] = {&m.s, &m.v, &m.a, &m.j};
   for (int k = 0; k < 4; ++k) {
     const double scale = o.time_units ? time_scale[k] : 1.0;
     Plot& plot = f.add_panel();
-    plot.y_label = (o.time_units ? in_time : per_radian)[k];
+    plot.y_label = (o.time_units ? in_time : per_radian)[arm][k];
     cam_angle_axis(plot);
     std::vector<double> y;
     for (double v : *values[k]) y.push_back(v * scale);
@@ -140,7 +143,7 @@ Figure svaj_figure(const CamDesignStage& d, const CamAnalysisStage& a, const Sva
   if (o.pressure_panel && flat_faced(d)) {
     Plot& plot = f.add_panel();
     cam_angle_axis(plot);
-    show_face_contact(plot, d, a, x, m.v);
+    show_face_contact(plot, d, a, x, std::get<PlateCamAnalysis>(a.cam).curves.face_contact);
     mark_segments(d, plot, false, o.draggable_boundaries);
   } else if (o.pressure_panel) {
     Plot& plot = f.add_panel();
@@ -149,7 +152,7 @@ Figure svaj_figure(const CamDesignStage& d, const CamAnalysisStage& a, const Sva
     plot.add(series("", x, in_degrees(m.pressure_angle)));
     const bool plate = std::holds_alternative<PlateCam>(d.cam);
     if (!plate) plot.title = "at the pitch radius";
-    if (o.pressure_angle_limit && plate && d.project.cam.follower.kind != FollowerKind::FlatFaced) {
+    if (o.pressure_angle_limit && plate && !is_flat_faced(d.project.cam.follower.kind)) {
       const double limit = *o.pressure_angle_limit * kDegreesPerRadian;
       plot.add_horizontal_line(limit, "limit " + number_text(limit) + "°", kJumpColor);
       plot.add_horizontal_line(-limit, "", kJumpColor);
@@ -179,16 +182,16 @@ Figure analysis_figure(const CamDesignStage& d, const CamAnalysisStage& a) {
     for (auto* v : {&phi, &contour, &pitch}) close(*v);
     if (flat_faced(d)) {
       f.title = "Contact on the face and radius of curvature";
-      std::vector<double> v;
-      for (const CamSample& s : p->analysis.samples) v.push_back(s.v);
-      close(v);
-      show_face_contact(pressure, d, a, x, v);
+      std::vector<double> contact;
+      for (const CamSample& s : p->analysis.samples) contact.push_back(s.face_contact);
+      close(contact);
+      show_face_contact(pressure, d, a, x, std::move(contact));
     } else {
       pressure.add(series("", x, phi));
     }
     radius.add(series("contour", x, contour));
     const Follower& follower = d.project.cam.follower;
-    if (follower.kind == FollowerKind::Roller) {
+    if (has_roller(follower.kind)) {
       radius.add(series("pitch curve", x, pitch, Series::Style::dashed));
       radius.add_horizontal_line(follower.roller_radius, "roller radius", kJumpColor);
     }
@@ -221,6 +224,22 @@ Figure analysis_figure(const CamDesignStage& d, const CamAnalysisStage& a) {
 
 namespace {
 
+// The oscillating follower at θ = 0 (cam and fixed frames coincide): the pivot, and the arm to the
+// roller centre or the face line from the pivot's foot across the contact at (0, Rb).
+void add_arm_at_rest(Plot& plot, const PlateCam& cam) {
+  const Eigen::Vector2d pivot = cam.pivot();
+  std::vector<Eigen::Vector2d> arm = {pivot};
+  if (cam.follower().kind == FollowerKind::OscillatingRoller) {
+    arm.emplace_back(0.0, cam.prime_radius());
+  } else {
+    const double foot_y =
+        cam.base_radius();  // the face y = Rb at rest; the pivot's foot is (px, Rb)
+    arm.emplace_back(pivot.x(), foot_y);
+    arm.emplace_back(-0.25 * pivot.x(), foot_y);
+  }
+  add_points(plot, "arm at θ = 0", arm, Series::Style::line_markers, "#e69f00");
+}
+
 Figure plate_profile_figure(const CamDesignStage& d, const CamAnalysisStage& a,
                             const CamConversionStage& c, const PlateProfile& profile) {
   Figure f(800, 800);
@@ -237,9 +256,10 @@ Figure plate_profile_figure(const CamDesignStage& d, const CamAnalysisStage& a,
   add_points(plot, "control polygon", curve.control_points(), Series::Style::line_markers,
              "#cc79a7");
   add_circle(plot, "base circle", d.project.cam.base_radius, Series::Style::dashed);
-  if (d.project.cam.follower.kind == FollowerKind::Roller)
+  if (has_roller(d.project.cam.follower.kind))
     add_points(plot, "pitch curve", std::get<PlateCamAnalysis>(a.cam).curves.pitch,
                Series::Style::dashed, "#009e73");
+  if (is_oscillating(d.project.cam.follower.kind)) add_arm_at_rest(plot, std::get<PlateCam>(d.cam));
   return f;
 }
 

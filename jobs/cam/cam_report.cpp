@@ -26,7 +26,19 @@ void add_design_fields(json& j, const CamDesignStage& r) {
               {"roller_radius_mm", d.follower.roller_radius},
               {"offset_mm", d.follower.offset},
               {"rotation", rotation_name(d.rotation)},
-              {"rpm", d.rpm}};
+              {"rpm", d.rpm},
+              {"motion_unit", motion_unit(d.follower.kind)}};
+  if (is_oscillating(d.follower.kind)) {
+    const PlateCam& cam = std::get<PlateCam>(r.cam);
+    j["cam"]["pivot_distance_mm"] = d.follower.pivot_distance;
+    if (d.follower.kind == FollowerKind::OscillatingRoller)
+      j["cam"]["arm_length_mm"] = d.follower.arm_length;
+    else
+      j["cam"]["face_offset_mm"] = d.follower.face_offset;
+    j["cam"]["pivot_side"] = d.follower.pivot_side > 0 ? "right" : "left";
+    j["cam"]["pivot_mm"] = {cam.pivot().x(), cam.pivot().y()};
+    j["cam"]["max_arm_swing_deg"] = cam.max_arm_swing();
+  }
   if (d.type == CamType::Cylindrical) {
     j["cam"]["cylinder_radius_mm"] = d.cylinder_radius;
     j["cam"]["z0_mm"] = d.z0;
@@ -39,7 +51,7 @@ void add_design_fields(json& j, const CamDesignStage& r) {
          {"law", s.spec().kind == SegmentKind::Dwell ? "" : motion_law_name(s.spec().law)},
          {"start_deg", s.start() * kDegreesPerRadian},
          {"end_deg", s.end() * kDegreesPerRadian},
-         {"lift_mm", s.spec().lift}});
+         {std::string("lift_") + std::string(motion_unit(d.follower.kind)), s.spec().lift}});
     if (s.spec().kind != SegmentKind::Dwell && s.spec().law == MotionLaw::Scca)
       j["segments"].back()["scca"] = {
           {"b", s.spec().scca.b}, {"c", s.spec().scca.c}, {"d", s.spec().scca.d}};
@@ -79,6 +91,7 @@ void add_profile_fields(json& j, const CamDesignStage& d, const CamConversionSta
 
 // The analyses: pressure angle, radii of curvature, undercut, face width, SVAJ extremes, speed.
 void add_analysis_fields(json& j, const CamDesignStage& d, const CamAnalysisStage& r) {
+  const std::string u(motion_unit(d.project.cam.follower.kind));
   if (const auto* p = std::get_if<PlateCamAnalysis>(&r.cam)) {
     const CamAnalysis& a = p->analysis;
     const auto finite_or_null = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
@@ -94,9 +107,10 @@ void add_analysis_fields(json& j, const CamDesignStage& d, const CamAnalysisStag
       j["undercut_ranges_deg"].push_back({u.from * kDegreesPerRadian, u.to * kDegreesPerRadian});
     if (a.face_width)
       j["face_width_mm"] = {{"left", a.face_width->left}, {"right", a.face_width->right}};
-    j["motion"] = {{"max_velocity", extremum(a.motion.velocity, 1, "mm_per_rad")},
-                   {"max_acceleration", extremum(a.motion.acceleration, 1, "mm_per_rad2")},
-                   {"max_jerk", extremum(a.motion.jerk, 1, "mm_per_rad3")}};
+    j["motion"] = {
+        {"max_velocity", extremum(a.motion.velocity, 1, (u + "_per_rad").c_str())},
+        {"max_acceleration", extremum(a.motion.acceleration, 1, (u + "_per_rad2").c_str())},
+        {"max_jerk", extremum(a.motion.jerk, 1, (u + "_per_rad3").c_str())}};
   } else {
     j["max_pressure_angle_deg"] = r.max_pressure_angle().value * kDegreesPerRadian;
     j["undercut"] = false;

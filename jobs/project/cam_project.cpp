@@ -119,17 +119,34 @@ FollowerLoad read_dynamics(const XmlElementReader& r, double unit) {
   return l;
 }
 
+// An oscillating follower's arm (plate_cam.h): pivot-distance, arm-length (roller) or face-offset
+// (flat face), pivot-side.
+void read_arm(const XmlElementReader& r, Follower& f) {
+  f.pivot_distance = r.positive("pivot-distance");
+  if (f.kind == FollowerKind::OscillatingRoller)
+    f.arm_length = r.positive("arm-length");
+  else
+    f.face_offset = r.number("face-offset", 0.0);
+  f.pivot_side = r.choice("pivot-side", {"right", "left"}, "right") == "right" ? 1 : -1;
+}
+
 CamDesign read_cam(const XmlElementReader& r, const std::string& file,
                    std::vector<UnknownName>& unknown) {
   CamDesign d;
   d.type = r.choice("type", {"plate", "cylindrical"}, "plate") == "plate" ? CamType::Plate
                                                                           : CamType::Cylindrical;
-  const std::string follower = r.choice("follower", {"knife-edge", "roller", "flat-faced"});
-  d.follower.kind = follower == "knife-edge" ? FollowerKind::KnifeEdge
-                    : follower == "roller"   ? FollowerKind::Roller
-                                             : FollowerKind::FlatFaced;
-  if (d.follower.kind == FollowerKind::Roller) d.follower.roller_radius = r.positive("roller-radius");
-  d.follower.offset = r.number("offset", 0.0);
+  const std::string follower = r.choice(
+      "follower",
+      {"knife-edge", "roller", "flat-faced", "oscillating-roller", "oscillating-flat-faced"});
+  for (FollowerKind kind : {FollowerKind::KnifeEdge, FollowerKind::Roller, FollowerKind::FlatFaced,
+                            FollowerKind::OscillatingRoller, FollowerKind::OscillatingFlatFaced})
+    if (follower == follower_kind_name(kind)) d.follower.kind = kind;
+  if (has_roller(d.follower.kind)) d.follower.roller_radius = r.positive("roller-radius");
+  if (is_oscillating(d.follower.kind)) {
+    read_arm(r, d.follower);
+  } else {
+    d.follower.offset = r.number("offset", 0.0);
+  }
   d.rotation = r.choice("rotation", {"ccw", "cw"}, "ccw") == "ccw" ? Rotation::CounterClockwise
                                                                     : Rotation::Clockwise;
   d.rpm = r.positive("rpm", 300.0);
@@ -141,7 +158,7 @@ CamDesign read_cam(const XmlElementReader& r, const std::string& file,
     d.cylinder_radius = r.positive("cylinder-radius");
     d.z0 = r.number("z0", 0.0);
     if (d.follower.kind != FollowerKind::Roller)
-      r.fail("follower", "a roller follower for a cylindrical cam");
+      r.fail("follower", "a (translating) roller follower for a cylindrical cam");
     d.groove_depth = r.positive("groove-depth", 0.0, true);
     // The walls' inner radius must keep the contact single-valued (groove_wall.h).
     const double inner_limit = std::sqrt(2.0) * d.follower.roller_radius;
@@ -198,10 +215,13 @@ void read_conversion(const XmlElementReader& r, double unit, CamProject& p) {
 }
 
 // Every length of a design read in another unit, in mm: the jobs work in mm only.
+// An oscillating follower's lifts and endpoint derivatives are angles (degrees), not lengths.
 void to_millimetres(CamDesign& d, double unit) {
   for (double* length : {&d.base_radius, &d.follower.roller_radius, &d.follower.offset,
-                         &d.cylinder_radius, &d.z0, &d.groove_depth})
+                         &d.follower.pivot_distance, &d.follower.arm_length,
+                         &d.follower.face_offset, &d.cylinder_radius, &d.z0, &d.groove_depth})
     *length *= unit;
+  if (is_oscillating(d.follower.kind)) return;
   for (SegmentSpec& s : d.segments) {
     s.lift *= unit;
     for (EndpointDerivatives* e : {&s.at_start, &s.at_end})
@@ -226,6 +246,14 @@ CamProject parse_cam_project(const std::string& text, const std::string& file,
   p.cam = read_cam(cam_reader, file, unknown);
   const double unit = read_length_unit(root, cam_reader);
   to_millimetres(p.cam, unit);
+  if (p.cam.type ==
+      CamType::Plate) {  // the follower's geometry against the base circle and the lift
+    try {
+      make_plate_cam(p.cam);
+    } catch (const InputError& e) {
+      throw InputError(cam_reader.where() + ": " + e.what());
+    }
+  }
   if (const auto limit = cam_reader.optional_number("pressure-angle-limit")) {
     if (!(*limit > 0 && *limit < 90))
       cam_reader.fail("pressure-angle-limit", "an angle in (0, 90) degrees");
@@ -239,6 +267,10 @@ CamProject parse_cam_project(const std::string& text, const std::string& file,
   }
   if (const XMLElement* dynamics = root.child("dynamics")) {
     const XmlElementReader r(dynamics, file);
+    if (is_oscillating(p.cam.follower.kind))
+      throw InputError(r.where() +
+                       ": <dynamics> needs a translating follower (an oscillating arm's "
+                       "inertia and torsion spring are not modelled yet)");
     p.load = read_dynamics(r, unit);
     r.collect_unknown_names(unknown);
   }
@@ -268,8 +300,17 @@ std::string cam_project_xml(const CamProject& p) {
   attr("type", std::string(cam_type_name(d.type)));
   attr("follower", std::string(follower_kind_name(d.follower.kind)));
   if (d.type == CamType::Plate || d.base_radius > 0) attr("base-radius", number(d.base_radius));
-  if (d.follower.kind == FollowerKind::Roller) attr("roller-radius", number(d.follower.roller_radius));
-  attr("offset", number(d.follower.offset));
+  if (has_roller(d.follower.kind)) attr("roller-radius", number(d.follower.roller_radius));
+  if (is_oscillating(d.follower.kind)) {
+    attr("pivot-distance", number(d.follower.pivot_distance));
+    if (d.follower.kind == FollowerKind::OscillatingRoller)
+      attr("arm-length", number(d.follower.arm_length));
+    else
+      attr("face-offset", number(d.follower.face_offset));
+    attr("pivot-side", d.follower.pivot_side > 0 ? "right" : "left");
+  } else {
+    attr("offset", number(d.follower.offset));
+  }
   attr("rotation", std::string(rotation_name(d.rotation)));
   attr("rpm", number(d.rpm));
   if (p.pressure_angle_limit)

@@ -17,7 +17,10 @@ namespace polarform::studio {
 namespace {
 
 constexpr std::array<std::string_view, 2> kTypes = {"plate", "cylindrical"};
-constexpr std::array<std::string_view, 3> kFollowers = {"knife-edge", "roller", "flat-faced"};
+// In FollowerKind's order.
+constexpr std::array<std::string_view, 5> kFollowers = {
+    "knife-edge", "roller", "flat-faced", "oscillating roller", "oscillating flat-faced"};
+constexpr std::array<std::string_view, 2> kPivotSides = {"right (+x)", "left (-x)"};
 constexpr std::array<std::string_view, 2> kRotations = {"counter-clockwise", "clockwise"};
 
 }  // namespace
@@ -48,17 +51,39 @@ bool CamSettingsPanel::draw(CamDesign& d, CamViewSettings& view, MessageLog& log
     int kind = static_cast<int>(d.follower.kind);
     if (combo("kind", kind, kFollowers)) {
       d.follower.kind = static_cast<FollowerKind>(kind);
-      if (d.follower.kind == FollowerKind::Roller && !(d.follower.roller_radius > 0))
+      if (has_roller(d.follower.kind) && !(d.follower.roller_radius > 0))
         d.follower.roller_radius = 0.25 * d.base_radius;
+      if (is_oscillating(d.follower.kind) && !(d.follower.pivot_distance > 0)) {
+        // An arm that reaches the prime circle comfortably (plate_cam.h): d = 1.6 Rp, L = 1.2 Rp.
+        const double rp =
+            d.base_radius + (has_roller(d.follower.kind) ? d.follower.roller_radius : 0.0);
+        d.follower.pivot_distance = 1.6 * rp;
+        d.follower.arm_length = 1.2 * rp;
+      }
       changed = true;
     }
   } else {
     ImGui::TextDisabled("roller (cylindrical cams)");
   }
-  if (d.follower.kind == FollowerKind::Roller)
+  if (has_roller(d.follower.kind))
     changed |= drag_number("roller radius [mm]", d.follower.roller_radius, 0.05, 0.0, 1e5, "%.3f");
-  if (d.type == CamType::Plate && d.follower.kind != FollowerKind::FlatFaced)
+  if (d.type == CamType::Plate &&
+      (d.follower.kind == FollowerKind::KnifeEdge || d.follower.kind == FollowerKind::Roller))
     changed |= drag_number("offset e [mm]", d.follower.offset, 0.05, -1e5, 1e5, "%.3f");
+  if (d.type == CamType::Plate && is_oscillating(d.follower.kind)) {
+    changed |=
+        drag_number("pivot distance [mm]", d.follower.pivot_distance, 0.05, 0.0, 1e5, "%.3f");
+    if (d.follower.kind == FollowerKind::OscillatingRoller)
+      changed |= drag_number("arm length [mm]", d.follower.arm_length, 0.05, 0.0, 1e5, "%.3f");
+    else
+      changed |= drag_number("face offset [mm]", d.follower.face_offset, 0.05, -1e5, 1e5, "%.3f");
+    int side = d.follower.pivot_side > 0 ? 0 : 1;
+    if (combo("pivot side", side, kPivotSides)) {
+      d.follower.pivot_side = side == 0 ? 1 : -1;
+      changed = true;
+    }
+    ImGui::TextDisabled("segment lifts are the arm's swing in degrees");
+  }
 
   section("Cam");
   if (d.type == CamType::Plate) {

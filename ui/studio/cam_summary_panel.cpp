@@ -30,11 +30,13 @@ void draw_cam_summary(const CamDesignStage& d, const CamAnalysisStage& s,
                       const CamViewSettings& view) {
   if (!ImGui::BeginTable("summary", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp))
     return;
-  row("stroke", number_text(d.program.stroke()) + " mm");
+  const std::string u(motion_unit_symbol(d.project.cam.follower.kind));
+  row(is_oscillating(d.project.cam.follower.kind) ? "arm swing" : "stroke",
+      number_text(d.program.stroke()) + (u == "°" ? u : " " + u));
   const MotionExtrema& m = s.motion_extrema();
-  row("max |v|", at(m.velocity, "mm/rad"));
-  row("max |a|", at(m.acceleration, "mm/rad²"));
-  row("max |j|", at(m.jerk, "mm/rad³"));
+  row("max |v|", at(m.velocity, (u + "/rad").c_str()));
+  row("max |a|", at(m.acceleration, (u + "/rad²").c_str()));
+  row("max |j|", at(m.jerk, (u + "/rad³").c_str()));
   if (const auto* plate = std::get_if<PlateCamAnalysis>(&s.cam)) {
     const CamAnalysis& a = plate->analysis;
     if (d.project.cam.follower.kind != FollowerKind::FlatFaced)

@@ -91,9 +91,9 @@ void ProfileView::draw_plate(const PlateCam& cam, const CamAnalysisStage& a,
   rotation_ = view.cam_turns ? cam.sense() * view.follower_angle : 0.0;
   double extent = cam.base_radius();
   for (const auto& q : p.pitch) extent = std::max(extent, q.norm());
-  const double roller =
-      cam.follower().kind == FollowerKind::Roller ? cam.follower().roller_radius : 0.0;
+  const double roller = has_roller(cam.follower().kind) ? cam.follower().roller_radius : 0.0;
   extent += roller;
+  if (is_oscillating(cam.follower().kind)) extent = std::max(extent, 1.1 * cam.pivot().norm());
   view2d_.set_canvas(min, max, Box2{-extent, -extent, extent, extent * 1.35});
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const auto screen = [&](const Eigen::Vector2d& q) {
@@ -198,6 +198,10 @@ void ProfileView::draw_follower(const PlateCam& cam, const CamAnalysis& analysis
       dl->AddLine(at(C + dir * h), at(C + dir * (h + 0.8 * rb)), body, 3.0f);
       break;
     }
+    case FollowerKind::OscillatingRoller:
+    case FollowerKind::OscillatingFlatFaced:
+      draw_arm(cam, analysis, back, P, C, dl);
+      break;
     case FollowerKind::FlatFaced: {
       double left = -0.5 * rb, right = 0.5 * rb;
       if (analysis.face_width) {
@@ -212,6 +216,39 @@ void ProfileView::draw_follower(const PlateCam& cam, const CamAnalysis& analysis
     }
   }
   dl->AddCircleFilled(at(C), 3.5f, color::error);
+}
+
+// The swing arm in the cam frame (the pivot turned back by σθ with the world): a grounded pivot,
+// the arm to the roller centre P with the roller, or to the face's foot and the face through the
+// contact C, as long as the face width the analysis asks for.
+void ProfileView::draw_arm(const PlateCam& cam, const CamAnalysis& analysis, double back,
+                           const Eigen::Vector2d& P, const Eigen::Vector2d& C,
+                           ImDrawList* dl) const {
+  const auto at = [&](const Eigen::Vector2d& q) { return view2d_.to_screen(q.x(), q.y()); };
+  const ImU32 body = IM_COL32(70, 70, 80, 255), fill = IM_COL32(200, 205, 215, 200);
+  const float scale = static_cast<float>(view2d_.pixels_per_unit());
+  const Eigen::Vector2d pivot = rotated(rotated(cam.pivot(), back), rotation_);
+  if (cam.follower().kind == FollowerKind::OscillatingRoller) {
+    const double rr = cam.follower().roller_radius;
+    dl->AddLine(at(pivot), at(P), body, 4.0f);
+    dl->AddCircleFilled(at(P), static_cast<float>(rr) * scale, fill, 64);
+    dl->AddCircle(at(P), static_cast<float>(rr) * scale, body, 64, 1.5f);
+    dl->AddCircleFilled(at(P), 2.5f, body);
+  } else {
+    // The reference point is the foot h n of the face from the cam centre: n = P/|P|.
+    const Eigen::Vector2d n = P.normalized(), foot = pivot - cam.follower().face_offset * n;
+    const Eigen::Vector2d along = (C - foot).norm() > 0 ? Eigen::Vector2d((C - foot).normalized())
+                                                        : Eigen::Vector2d(-n.y(), n.x());
+    const double reach = std::max((C - foot).norm() + 0.15 * cam.base_radius(),
+                                  analysis.face_width ? 1.1 * analysis.face_width->right : 0.0);
+    dl->AddLine(at(pivot), at(foot), body, 4.0f);
+    dl->AddLine(at(foot), at(foot + along * reach), body, 3.0f);
+  }
+  const float r = 5.0f;  // the grounded pivot
+  const ImVec2 q = at(pivot);
+  dl->AddTriangleFilled(q, ImVec2(q.x - 2 * r, q.y + 3 * r), ImVec2(q.x + 2 * r, q.y + 3 * r),
+                        fill);
+  dl->AddCircleFilled(q, r, body);
 }
 
 void ProfileView::draw_legend(const CamViewSettings& view, ImVec2 min, ImDrawList* dl) const {

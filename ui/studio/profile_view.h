@@ -28,6 +28,8 @@ class ProfileView {
                    ImVec2 min, ImVec2 max);
   void draw_follower(const PlateCam& cam, const CamAnalysis& analysis, const CamViewSettings& view,
                      ImDrawList* dl) const;
+  void draw_arm(const PlateCam& cam, const CamAnalysis& analysis, double back,
+                const Eigen::Vector2d& P, const Eigen::Vector2d& C, ImDrawList* dl) const;
   void draw_legend(const CamViewSettings& view, ImVec2 min, ImDrawList* dl) const;
   void hover_readout(const PlateCam& cam, const CamAnalysisStage& a,
                      const CamViewSettings& view) const;

@@ -159,14 +159,16 @@ TEST(CamOutputs, SvajCsvCoversTheRevolutionWithTheDesignsDisplacement) {
     const ExampleRun& run = example(name);
     SCOPED_TRACE(name);
     const Csv csv = read_csv(run.dir / "svaj.csv");
+    // An oscillating follower's motion is the arm's swing, in degrees.
+    const std::string u = is_oscillating(run.result.project().cam.follower.kind) ? "deg" : "mm";
     std::vector<std::string> header = {"cam angle theta [deg]",
-                                       "s [mm]",
-                                       "v [mm/s]",
-                                       "a [mm/s^2]",
-                                       "j [mm/s^3]",
-                                       "ds/dtheta [mm/rad]",
-                                       "d2s/dtheta2 [mm/rad^2]",
-                                       "d3s/dtheta3 [mm/rad^3]"};
+                                       "s [" + u + "]",
+                                       "v [" + u + "/s]",
+                                       "a [" + u + "/s^2]",
+                                       "j [" + u + "/s^3]",
+                                       "ds/dtheta [" + u + "/rad]",
+                                       "d2s/dtheta2 [" + u + "/rad^2]",
+                                       "d3s/dtheta3 [" + u + "/rad^3]"};
     if (run.result.plate()) {
       header.insert(header.end(), {"pressure angle [deg]", "contour radius of curvature [mm]",
                                    "pitch radius of curvature [mm]"});

@@ -3,6 +3,7 @@
 // and field; random corruption never escapes as anything but InputError.
 #include "jobs/project/cam_project.h"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -62,7 +63,7 @@ TEST(CamProject, ExamplesLoadWithoutWarningsAndRoundTripExactly) {
     EXPECT_EQ(cam_project_xml(again), cam_project_xml(p));
     ++count;
   }
-  EXPECT_EQ(count, 6);
+  EXPECT_EQ(count, 8);
 }
 
 // law="scca" with its fractions b, c, d (b + c + d = 1), kept through a save; the program's
@@ -198,6 +199,40 @@ TEST(CamProject, PolynomialConstraintsSetTheirOrder) {
   EXPECT_EQ(p.cam.segments[3].constrained_order, 2);
 }
 
+// An oscillating follower's arm is read in the file's length unit; its lifts (and endpoint
+// derivatives) are the arm's swing in degrees, never scaled. A swing the arm cannot make, and
+// dynamics (not modelled for an arm), are refused naming the file and line.
+TEST(CamProject, OscillatingFollowersReadTheArmInLengthsAndTheSwingInDegrees) {
+  const std::string arm =
+      "follower=\"oscillating-roller\" units=\"inch\" base-radius=\"2\" roller-radius=\"0.5\" "
+      "pivot-distance=\"5\" arm-length=\"4\" pivot-side=\"left\"";
+  const std::string swing =
+      "<segment kind=\"rise\" law=\"cycloidal\" lift=\"15\" to=\"180\"/>\n"
+      "<segment kind=\"return\" law=\"4-5-6-7\" to=\"360\"/>\n";
+  std::vector<std::string> warnings;
+  const CamProject p = parse_cam_project(cam(arm, swing), "cam.xml", warnings);
+  EXPECT_TRUE(warnings.empty());
+  EXPECT_EQ(p.cam.follower.kind, FollowerKind::OscillatingRoller);
+  EXPECT_DOUBLE_EQ(p.cam.follower.pivot_distance, 127.0);
+  EXPECT_DOUBLE_EQ(p.cam.follower.arm_length, 101.6);
+  EXPECT_DOUBLE_EQ(p.cam.follower.roller_radius, 12.7);
+  EXPECT_EQ(p.cam.follower.pivot_side, -1);
+  EXPECT_DOUBLE_EQ(p.cam.segments[0].lift, 15.0);
+  EXPECT_EQ(parse_cam_project(cam_project_xml(p), "saved.xml", warnings), p);
+
+  const std::string too_far =
+      "<segment kind=\"rise\" law=\"cycloidal\" lift=\"179\" to=\"180\"/>\n"
+      "<segment kind=\"return\" law=\"4-5-6-7\" to=\"360\"/>\n";
+  EXPECT_THAT(error_of(cam(arm, too_far)),
+              testing::AllOf(
+                  testing::StartsWith("cam.xml:2: <cam>: plate cam: the arm cannot swing the lift"),
+                  testing::HasSubstr("swings it 179°")));
+  EXPECT_THAT(
+      error_of("<polarform version=\"1\">\n<cam " + arm + ">\n" + swing +
+               "</cam>\n<dynamics mass=\"1\"/>\n</polarform>\n"),
+      testing::StartsWith("cam.xml:6: <dynamics>: <dynamics> needs a translating follower"));
+}
+
 TEST(CamProject, BrokenFilesGiveSpecificErrors) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"<polarform version=\"1\"><cam",
@@ -235,8 +270,28 @@ TEST(CamProject, BrokenFilesGiveSpecificErrors) {
       {cam("follower=\"roller\" base-radius=\"40\"", kSegments),
        "cam.xml:2: <cam> attribute 'roller-radius': expected a number (attribute is missing)"},
       {cam("type=\"cylindrical\" follower=\"flat-faced\" cylinder-radius=\"60\"", kSegments),
-       "cam.xml:2: <cam> attribute 'follower': expected a roller follower for a cylindrical cam, "
-       "got 'flat-faced'"},
+       "cam.xml:2: <cam> attribute 'follower': expected a (translating) roller follower for a "
+       "cylindrical cam, got 'flat-faced'"},
+      // Oscillating followers: the arm must reach the base circle and swing the lift.
+      {cam("follower=\"oscillating-roller\" base-radius=\"40\" roller-radius=\"10\" "
+           "arm-length=\"80\"",
+           kSegments),
+       "cam.xml:2: <cam> attribute 'pivot-distance': expected a number (attribute is missing)"},
+      {cam("follower=\"oscillating-roller\" base-radius=\"40\" roller-radius=\"10\" "
+           "pivot-distance=\"140\" arm-length=\"80\"",
+           kSegments),
+       "cam.xml:2: <cam>: plate cam: the arm cannot put the roller on the prime circle: the roller "
+       "centre at rest must be base-radius + roller-radius = 50 mm from the cam centre, but "
+       "pivot-distance 140 mm and arm-length 80 mm reach only between 60 and 220 mm"},
+      {cam("follower=\"oscillating-flat-faced\" base-radius=\"40\" pivot-distance=\"45\" "
+           "face-offset=\"10\"",
+           kSegments),
+       "cam.xml:2: <cam>: plate cam: the face cannot touch the base circle: pivot-distance 45 mm "
+       "must exceed |base-radius + face-offset| = 50 mm"},
+      {cam("follower=\"oscillating-roller\" base-radius=\"40\" roller-radius=\"10\" "
+           "pivot-distance=\"110\" arm-length=\"80\" pivot-side=\"up\"",
+           kSegments),
+       "cam.xml:2: <cam> attribute 'pivot-side': expected one of right|left, got 'up'"},
       {"<cam/>", "cam.xml:1: <cam>: expected the root element <polarform>"},
       {"<polarform version=\"2\"/>",
        "cam.xml:1: <polarform> attribute 'version': expected 1 (the project version this "
