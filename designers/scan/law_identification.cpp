@@ -64,8 +64,14 @@ IdentifiedMotion identify_law(const FollowerSamples& samples, const MotionPiece&
   for (const LawFit& f : m.candidates) m.bic.push_back(bic(f));
   for (std::size_t i = 1; i < m.bic.size(); ++i)
     if (m.bic[i] < m.bic[m.chosen]) m.chosen = i;
+  // SCCA holds four standard laws: it is no rival to the one it reduces to.
+  const bool member = m.law().shape.law == MotionLaw::SimpleHarmonic ||
+                      m.law().shape.law == MotionLaw::Cycloidal ||
+                      m.law().shape.law == MotionLaw::ModifiedTrapezoid ||
+                      m.law().shape.law == MotionLaw::ModifiedSine;
   for (std::size_t i = 0; i < m.candidates.size(); ++i)
-    if (i != m.chosen && m.candidates[i].rss - m.law().rss < kIndistinguishableChi2 * sigma2)
+    if (i != m.chosen && !(member && m.candidates[i].shape.law == MotionLaw::Scca) &&
+        m.candidates[i].rss - m.law().rss < kIndistinguishableChi2 * sigma2)
       m.indistinguishable.push_back(i);
   m.kind = m.law().lift > 0 ? SegmentKind::Rise : SegmentKind::Return;
   return m;

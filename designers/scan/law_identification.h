@@ -5,7 +5,8 @@
 // criterion BIC = RSS/σ² + k·ln n is chosen (Schwarz 1978; σ known: the scan's noise), so that
 // SCCA, which holds four of the standard laws, wins only when its two extra parameters earn
 // their penalty. The data cannot tell the chosen law from another when the other's RSS exceeds
-// it by less than 9σ² (a difference of the two fitted curves within 3σ along the residual).
+// it by less than 9σ² (a difference of the two fitted curves within 3σ along the residual); SCCA
+// is not listed against the standard laws it holds (harmonic, cycloidal, the modified ones).
 // The polynomial and B-spline laws are not candidates: with the zero endpoint derivatives of a
 // rise between dwells, the minimal Hermite polynomials are the 3-4-5 and 4-5-6-7 laws.
 #pragma once
