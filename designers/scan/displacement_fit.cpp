@@ -27,7 +27,8 @@ DisplacementFit fit_displacement(const FollowerSamples& s, const DisplacementFit
   fo.size_u = fo.max_size_u = 1;
   fo.degree_v = o.degree;
   fo.size_v = o.spans;
-  fo.fairness.mode = FairnessOptions::Mode::gcv;
+  fo.fairness.mode = o.lambda ? FairnessOptions::Mode::fixed : FairnessOptions::Mode::gcv;
+  if (o.lambda) fo.fairness.weight = *o.lambda;
   fo.reduce_constant = false;
   fo.threads = o.threads;
   const FunctionSpace space{0.0, 1.0, 0.0, 2 * std::numbers::pi, true};

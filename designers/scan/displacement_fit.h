@@ -7,6 +7,8 @@
 // hat matrix is dof; Hastie & Tibshirani 1990, §3.8).
 #pragma once
 
+#include <optional>
+
 #include "designers/scan/follower_inversion.h"
 #include "src/fit/error_stats.h"
 #include "src/nurbs/bspline.h"
@@ -17,6 +19,9 @@ struct DisplacementFitOptions {
   int degree = 5;
   int spans = 180;  // 2° each over a revolution; GCV decides how much of that freedom is used
   int threads = 2;
+  // A fixed fairness weight instead of GCV's: the same smoother applied to other data (the noise
+  // propagated through a fit, motion_resolution.h).
+  std::optional<double> lambda;
 };
 
 struct DisplacementFit {

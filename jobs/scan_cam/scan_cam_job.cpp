@@ -71,6 +71,12 @@ ScanCamJobResult run_scan_cam_job(const std::filesystem::path& scan, const ScanC
   r.read_seconds = clock.lap();
   r.scan = naming_input(scan.string(), [&] { return analyse_scanned_cam(cloud.points, so); });
   r.interrogation = interrogate_profile(r.scan.fit);
+  r.resolution = resolve_motion(r.scan);
+  try {
+    r.design = recover_design(r.scan);
+  } catch (const InputError& e) {
+    r.design_failure = e.what();
+  }
   if (r.nominal) {
     r.comparison =
         naming_input(scan.string(), [&] { return compare_to_nominal(r.scan, *r.nominal); });

@@ -1,13 +1,16 @@
 // The scan-cam job: what `polarform scan-cam` computes to inspect a manufactured plate cam or to
 // recover a lost design from a 2D profile scan or a 3D scan — read the scan (and the nominal cam
-// project when given), run the scanned-cam pipeline (designers/scan/scanned_cam.h) and compare it
-// with the nominal. Computing writes nothing.
+// project when given), run the scanned-cam pipeline (designers/scan/scanned_cam.h), compare it
+// with the nominal, state how far the scan resolves the motion and recover the design (segments,
+// laws) from it. Computing writes nothing.
 #pragma once
 
 #include <filesystem>
 #include <optional>
 #include <string>
 
+#include "designers/scan/design_recovery.h"
+#include "designers/scan/motion_resolution.h"
 #include "designers/scan/nominal_comparison.h"
 #include "designers/scan/scanned_cam.h"
 #include "jobs/fit/profile_interrogation.h"
@@ -43,6 +46,11 @@ struct ScanCamJobResult {
   std::optional<double> tolerance;
   bool within_tolerance = true;  // the profile's normal deviation within ±tolerance
   std::string follower_source;   // "nominal design" or "options"
+  // The design recovered from the motion (segments, laws, the re-designed cam's deviation), or
+  // why there is none (design_failure).
+  std::optional<RecoveredDesign> design;
+  std::string design_failure;
+  MotionResolution resolution;  // up to which derivative the scan resolves the motion
   double read_seconds = 0.0, seconds = 0.0;
 };
 

@@ -16,7 +16,9 @@
 #include "jobs/fit/profile_curvature_figure.h"
 #include "jobs/fit/profile_interrogation.h"
 #include "jobs/report/output_files.h"
+#include "jobs/scan_cam/scan_cam_design_report.h"
 #include "jobs/scan_cam/scan_cam_plots.h"
+#include "jobs/scan_cam/scan_cam_project.h"
 #include "polarform_version.h"
 #include "src/error.h"
 #include "src/number_text.h"
@@ -28,6 +30,22 @@ namespace {
 
 constexpr int kGrid = 720;  // cam angles of svaj.csv (0.5° apart)
 using json = nlohmann::ordered_json;
+
+// --write-project's target must be a file in an existing folder.
+void check_project_target(const std::filesystem::path& project) {
+  const std::filesystem::path folder =
+      project.has_parent_path() ? project.parent_path() : std::filesystem::path(".");
+  if (!std::filesystem::is_directory(folder))
+    throw InputError("--write-project " + project.string() + ": the folder " + folder.string() +
+                     " does not exist");
+  if (std::filesystem::is_directory(project))
+    throw InputError("--write-project " + project.string() + ": is a folder; expected a file name");
+}
+
+double wrapped_degrees(double theta) {
+  const double t = std::fmod(theta, 2 * std::numbers::pi);
+  return (t < 0 ? t + 2 * std::numbers::pi : t) * kDegreesPerRadian;
+}
 
 json vec(const Eigen::Vector3d& v) { return json::array({v.x(), v.y(), v.z()}); }
 
@@ -85,6 +103,39 @@ json motion_json(const ScannedCam& s) {
               {"max_abs_velocity_mm_per_rad", peak[1]},
               {"max_abs_acceleration_mm_per_rad2", peak[2]},
               {"max_abs_jerk_mm_per_rad3", peak[3]}};
+}
+
+// The recovered design: the segments with their laws and uncertainties, and the re-designed
+// cam's deviation from the scan.
+void add_design_section(HtmlReport& html, const ScanCamJobResult& r) {
+  const RecoveredDesign& d = *r.design;
+  html.add_heading("Recovered design");
+  std::vector<std::vector<std::string>> rows;
+  for (const IdentifiedMotion& m : d.motions) {
+    const LawFit& f = m.law();
+    std::string others;
+    for (std::size_t i : m.indistinguishable)
+      others += (others.empty() ? "" : ", ") + law_label(m.candidates[i].shape);
+    rows.push_back({std::string(segment_kind_name(m.kind)), law_label(f.shape),
+                    format_trimmed(wrapped_degrees(f.start - d.phase), 3) + "° ± " +
+                        format_trimmed(f.sd[0] * kDegreesPerRadian, 3) + "°",
+                    format_trimmed(wrapped_degrees(f.end - d.phase), 3) + "° ± " +
+                        format_trimmed(f.sd[1] * kDegreesPerRadian, 3) + "°",
+                    format_trimmed(std::abs(f.lift), 4) + " ± " + number_text(f.sd[3]) + " mm",
+                    number_text(f.rms() * 1e3) + " µm", others.empty() ? "—" : others});
+  }
+  html.add_table({"motion", "law", "from", "to", "lift", "rms residual", "not told apart from"},
+                 rows);
+  const NominalComparison& c = d.deviation;
+  html.add_paragraph(
+      "Angles are in the recovered design's frame: design cam angle = scan cam angle − " +
+      format_trimmed(d.phase * kDegreesPerRadian, 4) + "°. Base radius " +
+      format_trimmed(d.design.base_radius, 4) +
+      " mm. Laws were chosen by least BIC with the "
+      "displacement noise σ̂; the re-designed profile deviates from the scan's fitted profile by " +
+      number_text(c.normal_stats.rms * 1e3) + " µm rms, " + number_text(c.normal_stats.max * 1e3) +
+      " µm max (normal), against a profile noise of " + number_text(r.scan.contour_noise * 1e3) +
+      " µm.");
 }
 
 std::string html_report(const ScanCamJobResult& r, const json& report,
@@ -149,13 +200,15 @@ std::string html_report(const ScanCamJobResult& r, const json& report,
                       format_trimmed(r.comparison->svaj_stats[k].max, 6)});
     html.add_table({"quantity", "rms difference", "max |difference|"}, rows);
   }
+  if (r.design) add_design_section(html, r);
   html.add_file_list(report["files"].get<std::vector<std::string>>());
   return html.html();
 }
 
 }  // namespace
 
-json scan_cam_report_json(const ScanCamJobResult& r, const std::vector<std::string>& files) {
+json scan_cam_report_json(const ScanCamJobResult& r, const std::vector<std::string>& files,
+                          const std::filesystem::path& project) {
   const ScannedCam& s = r.scan;
   const CamProfile& p = s.profile;
   const FitReport& fit = s.fit.report;
@@ -217,6 +270,9 @@ json scan_cam_report_json(const ScanCamJobResult& r, const std::vector<std::stri
       j["nominal"]["svaj_difference"][names[k]] = stats(c.svaj_stats[k]);
   }
   if (r.tolerance) j["tolerance"] = {{"band_mm", *r.tolerance}, {"within", r.within_tolerance}};
+  j["resolution"] = resolution_json(r.resolution);
+  j["design"] = design_json(r);
+  if (!project.empty()) j["design"]["project_file"] = project.string();
   j["interrogation"] = interrogation_json(r.interrogation);
   j["warnings"] = r.warnings;
   j["files"] = files;
@@ -225,7 +281,12 @@ json scan_cam_report_json(const ScanCamJobResult& r, const std::vector<std::stri
 }
 
 std::vector<std::string> write_scan_cam_outputs(const ScanCamJobResult& r,
-                                                const std::filesystem::path& dir) {
+                                                const std::filesystem::path& dir,
+                                                const std::filesystem::path& project) {
+  // The project is rendered and its folder checked first, so a refusal writes nothing.
+  const std::string project_xml =
+      project.empty() ? std::string() : cam_project_xml(recovered_cam_project(r));
+  if (!project.empty()) check_project_target(project);
   std::map<std::string, std::string> content;
   const NurbsCurve2d& curve = r.scan.fit.curve;
   const std::string title = "polarform scan-cam of " + r.input.filename().string();
@@ -265,11 +326,12 @@ std::vector<std::string> write_scan_cam_outputs(const ScanCamJobResult& r,
   files.push_back("report.html");
   files.push_back("report.json");
   std::sort(files.begin(), files.end());
-  const json report = scan_cam_report_json(r, files);
+  const json report = scan_cam_report_json(r, files, project);
   content["report.json"] = report_json_text(report);
   content["report.html"] = html_report(r, report, svgs);
 
   write_files_atomically(dir, content);
+  if (!project.empty()) write_file_atomically(project, project_xml);
   return files;
 }
 

@@ -5,6 +5,8 @@
 
 #include "designers/cam/contour_polar_function.h"
 #include "jobs/fit/fit_plots.h"
+#include "jobs/scan_cam/scan_cam_design_report.h"
+#include "src/number_text.h"
 #include "src/nurbs/tessellation.h"
 #include "src/units.h"
 
@@ -31,6 +33,31 @@ void cam_angle_axis(Plot& p) {
   p.x_label = "cam angle θ [deg]";
   p.x_range = AxisRange{0, 360};
   p.x_tick_step = 45;
+}
+
+// The recovered rises and returns shaded over their fitted boundaries (scan angles, split where
+// they pass 360°); on the displacement panel (rest height y0) each is named by its law.
+void shade_motions(Plot& p, const RecoveredDesign& d, const double* rest_height) {
+  constexpr double kFull = 360.0;
+  bool legend[2] = {false, false};  // rise, return
+  for (const IdentifiedMotion& m : d.motions) {
+    const LawFit& f = m.law();
+    const double from = std::fmod(std::fmod(f.start * kDegreesPerRadian, kFull) + kFull, kFull);
+    const double to = from + (f.end - f.start) * kDegreesPerRadian;
+    const bool rise = m.kind == SegmentKind::Rise;
+    bool& shown = legend[rise ? 0 : 1];
+    const char* color = rise ? "#56B4E9" : "#E69F00";
+    p.add_band(from, std::min(to, kFull),
+               shown  ? ""
+               : rise ? "rise (recovered)"
+                      : "return (recovered)",
+               color);
+    shown = true;
+    if (to > kFull) p.add_band(0.0, to - kFull, "", color);
+    if (rest_height)
+      p.add_annotation(std::fmod(0.5 * (from + to), kFull), f.level + 0.5 * f.lift - *rest_height,
+                       law_label(f.shape));
+  }
 }
 
 }  // namespace
@@ -68,6 +95,12 @@ Figure scan_svaj_figure(const ScanCamJobResult& r) {
       p.add(std::move(data));
     }
     p.add(Series{"recovered", degrees(theta), svaj[k], Series::Style::line, ""});
+    if (r.design) shade_motions(p, *r.design, k == 0 ? &s.rest_height : nullptr);
+    if (static_cast<int>(k) > r.resolution.resolved_order) {
+      const DerivativeResolution& d = r.resolution.derivatives[k];
+      p.title = "unresolved: noise " + number_text(d.noise) + " against a peak of " +
+                number_text(d.signal) + " (needs ≥ 1/" + number_text(kResolvedRatio) + ")";
+    }
     if (r.nominal) {
       Series nominal{"nominal", degrees(theta), {}, Series::Style::dashed, ""};
       for (double t : theta) {

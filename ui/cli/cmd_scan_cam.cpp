@@ -7,6 +7,7 @@
 #include <iostream>
 #include <numbers>
 
+#include "jobs/scan_cam/scan_cam_design_report.h"
 #include "jobs/scan_cam/scan_cam_outputs.h"
 #include "src/error.h"
 #include "src/number_text.h"
@@ -21,7 +22,7 @@ namespace {
 
 struct ScanCamArgs {
   std::string scan, out, center, bore, axis = "auto", nominal, tol, follower, roller_radius, offset,
-                                       rotation, threads = "2";
+                                       rotation, threads = "2", write_project;
   bool skip_bad = false, quiet = false, lenient = false;
 };
 
@@ -65,6 +66,35 @@ ScanCamJobOptions job_options(const ScanCamArgs& a) {
   return o;
 }
 
+// The resolution and the recovered design: one line per rise or return.
+void print_design(const ScanCamJobResult& r) {
+  const MotionResolution& res = r.resolution;
+  std::printf(
+      "resolution: the scan resolves %s%s\n",
+      res.resolved_order >= 0 ? kDerivativeNames[res.resolved_order] : "nothing",
+      res.resolved_order >= 0 && res.resolved_order < 3 ? " (higher derivatives are noise)" : "");
+  if (!r.design) {
+    std::printf("design: not recovered: %s\n", r.design_failure.c_str());
+    return;
+  }
+  const RecoveredDesign& d = *r.design;
+  std::printf("design: %zu motions, base radius %.4f mm, phase %.4f deg\n", d.motions.size(),
+              d.design.base_radius, d.phase * kDegreesPerRadian);
+  for (const IdentifiedMotion& m : d.motions) {
+    const LawFit& f = m.law();
+    std::printf("  %s %s: lift %.4f ± %.2g mm, from %.3f ± %.2g to %.3f ± %.2g deg%s\n",
+                std::string(segment_kind_name(m.kind)).c_str(), law_label(f.shape).c_str(),
+                std::abs(f.lift), f.sd[3],
+                std::fmod(std::fmod((f.start - d.phase) * kDegreesPerRadian, 360.0) + 360.0, 360.0),
+                f.sd[0] * kDegreesPerRadian,
+                std::fmod(std::fmod((f.end - d.phase) * kDegreesPerRadian, 360.0) + 360.0, 360.0),
+                f.sd[1] * kDegreesPerRadian,
+                m.indistinguishable.empty() ? "" : " (other laws fit as well)");
+  }
+  std::printf("re-designed profile against the scan (normal): rms %.3g mm, max %.3g mm\n",
+              d.deviation.normal_stats.rms, d.deviation.normal_stats.max);
+}
+
 // The summary on stdout, unless --quiet.
 void print_summary(const ScanCamArgs& a, const ScanCamJobResult& r,
                    const std::vector<std::string>& files) {
@@ -90,6 +120,9 @@ void print_summary(const ScanCamArgs& a, const ScanCamJobResult& r,
         r.comparison->svaj_stats[0].rms, r.comparison->svaj_stats[0].max);
   if (r.tolerance)
     std::printf("tolerance ±%.3g mm: %s\n", *r.tolerance, r.within_tolerance ? "met" : "NOT MET");
+  print_design(r);
+  if (!a.write_project.empty())
+    std::printf("wrote the recovered design to %s\n", a.write_project.c_str());
   std::printf("wrote %zu files to %s (%.0f ms)\n", files.size(),
               std::filesystem::absolute(a.out).string().c_str(), r.seconds * 1e3);
   std::fflush(stdout);
@@ -103,7 +136,7 @@ void run(const ScanCamArgs& a) {
     if (f >= 1.0) reading.finish();
   };
   const ScanCamJobResult r = run_scan_cam_job(a.scan, o);
-  const std::vector<std::string> files = write_scan_cam_outputs(r, a.out);
+  const std::vector<std::string> files = write_scan_cam_outputs(r, a.out, a.write_project);
   for (const std::string& w : r.warnings) std::cerr << "polarform: warning: " << w << "\n";
   if (r.dropped > 0)
     std::cerr << "polarform: warning: " << r.dropped << " bad records skipped in " << a.scan
@@ -128,6 +161,9 @@ void add_scan_cam_command(CLI::App& app) {
       "displacement s(θ) and its derivatives (smoothed by generalized cross-validation, noise "
       "floor\n"
       "stated), and with --nominal aligns the phase and reports the deviation from the design.\n"
+      "States up to which derivative (s, v, a, j) the scan resolves the motion, and recovers the\n"
+      "design: dwells, rises and returns, each with its law (six standard laws and SCCA, chosen\n"
+      "by BIC), boundaries and lift with uncertainties; --write-project writes it as a project.\n"
       "Writes profile.igs/.stp/.dxf/.x3d (cam frame), svaj.csv, svaj.svg, deviation.svg,\n"
       "profile.svg, report.json and report.html; with a nominal also deviation.csv and\n"
       "svaj_difference.svg.");
@@ -156,6 +192,10 @@ void add_scan_cam_command(CLI::App& app) {
   cmd->add_option("--roller-radius", args->roller_radius, "MM: roller radius (--follower roller)");
   cmd->add_option("--offset", args->offset, "MM: follower offset e (default 0)");
   cmd->add_option("--rotation", args->rotation, "ccw|cw: sense of rotation without a nominal");
+  cmd->add_option("--write-project", args->write_project,
+                  "DESIGN.xml: write the design recovered from the scan (segments, laws, base "
+                  "radius, follower) as a cam project; `polarform cam DESIGN.xml` reproduces the "
+                  "profile to the deviation report.json states (design.redesign_deviation)");
   cmd->add_option("--threads", args->threads, "worker threads (default 2)");
   cmd->add_flag("--skip-bad", args->skip_bad,
                 "skip unparsable or non-finite records instead of stopping");

@@ -114,6 +114,60 @@ TEST(ScanCamJob, ReportStatesSmallNumbersWithTheirDigits) {
             std::string::npos);
 }
 
+TEST(ScanCamJob, RecoveredDesignIsReportedAndWrittenAsAProjectThatReproducesTheScan) {
+  // cam_profile.xyz: roller.xml turned 30° (ccw): its rise at 90°–180° is seen at 60°–150°.
+  ScanCamJobOptions o;
+  o.follower = Follower{FollowerKind::Roller, 0.0, 10.0};
+  const ScanCamJobResult r = run_scan_cam_job(example("scans/cam_profile.xyz"), o);
+  ASSERT_TRUE(r.design) << r.design_failure;
+  const auto dir = scratch_dir();
+  const auto project = dir / "design.xml";
+  write_scan_cam_outputs(r, dir / "out", project);
+  const nlohmann::json j = read_json(dir / "out" / "report.json");
+  const nlohmann::json& d = j["design"];
+  ASSERT_EQ(d["segments"].size(), 2u);
+  EXPECT_EQ(d["phase_deg"], 0.0);
+  for (const auto& seg : d["segments"]) {
+    const bool rise = seg["kind"] == "rise";
+    EXPECT_EQ(seg["law"], rise ? "cycloidal" : "4-5-6-7");
+    EXPECT_NEAR(seg["from_deg"].get<double>(), rise ? 60.0 : 210.0, 0.02);
+    EXPECT_NEAR(seg["to_deg"].get<double>(), rise ? 150.0 : 330.0, 0.02);
+    EXPECT_NEAR(seg["lift_mm"].get<double>(), 20.0, 0.015);  // 3σ
+    EXPECT_LT(seg["from_sd_deg"].get<double>(), 0.01);
+    EXPECT_EQ(seg["candidates"].size(), 7u);
+    EXPECT_TRUE(seg["indistinguishable_from"].empty());
+  }
+  EXPECT_LT(d["redesign_deviation"]["profile_normal_mm"]["max"].get<double>(), 0.015);
+  EXPECT_NEAR(d["redesign_deviation"]["point_normal_mm"]["rms"].get<double>(), 0.005, 0.0005);
+  EXPECT_EQ(j["resolution"]["resolved_up_to"], "a");
+  EXPECT_FALSE(j["resolution"]["derivatives"]["j"]["resolved"].get<bool>());
+  std::ifstream svg(dir / "out" / "svaj.svg");
+  const std::string svaj((std::istreambuf_iterator<char>(svg)), std::istreambuf_iterator<char>());
+  EXPECT_NE(svaj.find("unresolved"), std::string::npos);
+  // The project reads back and, as the scan's nominal, matches it within the noise.
+  std::vector<std::string> warnings;
+  const CamProject p = read_cam_project(project, warnings);
+  EXPECT_NEAR(p.cam.base_radius, 40.0, 0.015);
+  ScanCamJobOptions again;
+  again.nominal = project;
+  const ScanCamJobResult check = run_scan_cam_job(example("scans/cam_profile.xyz"), again);
+  EXPECT_LT(check.comparison->normal_stats.max, 0.015);
+  EXPECT_NEAR(std::remainder(check.scan.alignment->phase, 2 * std::numbers::pi), 0.0, 1e-4);
+}
+
+TEST(ScanCamJob, WriteProjectIntoAMissingFolderWritesNothing) {
+  ScanCamJobOptions o;
+  const ScanCamJobResult r = run_scan_cam_job(example("scans/cam_profile.xyz"), o);
+  const auto dir = scratch_dir();
+  try {
+    write_scan_cam_outputs(r, dir / "out", dir / "missing" / "design.xml");
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--write-project"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+}
+
 TEST(ScanCamJob, BadOptionCombinationsAreRefused) {
   const std::string scan = example("scans/cam_profile.xyz");
   ScanCamJobOptions tol_only;
