@@ -48,6 +48,33 @@ double signed_lift(const SegmentSpec& s) {
   return s.kind == SegmentKind::Rise ? s.lift : s.kind == SegmentKind::Return ? -s.lift : 0.0;
 }
 
+// Constant velocity without blends jumps in velocity at its ends unless the neighbours move at
+// its velocity there (e.g. polynomial segments with that endpoint velocity): infinite acceleration
+// otherwise, refused.
+void check_unblended_velocity(const std::vector<MotionSegment>& segments) {
+  const std::size_t n = segments.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const MotionSegment& seg = segments[i];
+    if (seg.spec().kind == SegmentKind::Dwell || seg.spec().law != MotionLaw::ConstantVelocity ||
+        seg.spec().blend != 0.0)
+      continue;
+    double own[2], other[2];
+    for (const bool at_start : {true, false}) {
+      const MotionSegment& next = segments[at_start ? (i + n - 1) % n : (i + 1) % n];
+      seg.derivatives(at_start ? seg.start() : seg.end(), 1, own);
+      next.derivatives(at_start ? next.end() : next.start(), 1, other);
+      if (std::abs(own[1] - other[1]) >
+          1e-9 * std::max({1.0, std::abs(own[1]), std::abs(other[1])}))
+        throw InputError(
+            "cam program: " + quoted(seg.spec()) + " has constant velocity " + number_text(own[1]) +
+            " mm/rad without blends (blend=\"0\") but " + quoted(next.spec()) + " moves at " +
+            number_text(other[1]) + " mm/rad at " +
+            degrees_text(at_start ? seg.start() : seg.end()) +
+            ": infinite acceleration; give blend > 0 or a neighbour that ends at that velocity");
+    }
+  }
+}
+
 // A segment's exact form as Bezier/B-spline pieces of degree p: unchanged when it has degree p,
 // otherwise each knot span as a Bezier piece raised to degree p (Taylor expansion at the span
 // start, then Polynomial::bezier).
@@ -92,6 +119,10 @@ CamProgram::CamProgram(std::vector<SegmentSpec> specs) {
     throw InputError(msg.str());
   }
   data->stroke = *std::max_element(levels.begin(), levels.end()) - lowest;
+  for (const MotionSegment& s : data->segments)  // a rise-return peaks inside
+    if (s.spec().kind == SegmentKind::RiseReturn)
+      data->stroke = std::max(data->stroke, s.start_level() + s.spec().lift);
+  check_unblended_velocity(data->segments);
   data_ = std::move(data);
 }
 
@@ -158,12 +189,8 @@ std::vector<double> CamProgram::smoothness_breaks() const {
   std::vector<double> out;
   for (const MotionSegment& seg : segments()) {
     if (seg.start() > 0) out.push_back(seg.start());
-    const SegmentSpec& spec = seg.spec();
-    if (spec.kind == SegmentKind::Dwell) continue;
-    const std::vector<double> joins = spec.law == MotionLaw::Scca ? SccaLaw(spec.scca).joins()
-                                      : is_standard_law(spec.law) ? law_joins(spec.law)
-                                                                  : std::vector<double>{};
-    for (double x : joins) out.push_back(seg.start() + x * (seg.end() - seg.start()));
+    const std::vector<double> joins = seg.joins();
+    out.insert(out.end(), joins.begin(), joins.end());
   }
   return out;
 }

@@ -1,8 +1,9 @@
 // CamProgram: the follower-displacement program s(θ) of a cam over one revolution, built from
-// dwell / rise / return segments that cover [0, 2π) without gaps or overlaps (Bae 2002, §5.1,
-// Figure 5.1). s is measured from the lowest segment-boundary level (the base circle); it comes with
-// exact θ-derivatives, time derivatives at a given speed, and its exact piecewise B-spline form when
-// every segment is polynomial. Immutable and cheap to copy (segments are shared).
+// dwell / rise / return / rise–return segments that cover [0, 2π) without gaps or overlaps (Bae
+// 2002, §5.1, Figure 5.1). s is measured from the lowest segment-boundary level (the base circle);
+// it comes with exact θ-derivatives, time derivatives at a given speed, and its exact piecewise
+// B-spline form when every segment is polynomial. Immutable and cheap to copy (segments are
+// shared).
 #pragma once
 
 #include <memory>
@@ -34,8 +35,9 @@ class CamProgram {
   // Sorts the segments by start angle, names unnamed ones "segment N" (N = 1-based position in
   // the given list) and validates: each segment (see MotionSegment), the first starts at 0 and the
   // last ends at 2π, consecutive segments meet (within 1e-9 rad; the angles are then snapped
-  // together), and the rises and returns cancel over the revolution. Throws InputError naming the
-  // segments and angles involved.
+  // together), the rises and returns cancel over the revolution, and a constant-velocity segment
+  // without blends meets neighbours at its velocity. Throws InputError naming the segments and
+  // angles involved.
   explicit CamProgram(std::vector<SegmentSpec> segments);
 
   const std::vector<MotionSegment>& segments() const { return data_->segments; }
@@ -48,7 +50,7 @@ class CamProgram {
   // Angles in (0, 2π) where s may lose smoothness: the segment boundaries and the joins inside
   // piecewise laws (law_joins), increasing.
   std::vector<double> smoothness_breaks() const;
-  // Largest segment-boundary level (the stroke of a program whose segments are monotone).
+  // Largest follower level: the segment boundaries and the tops of rise-returns.
   double stroke() const { return data_->stroke; }
   // Time derivatives at θ for a cam turning at rpm revolutions per minute (rpm > 0).
   Kinematics kinematics(double theta, double rpm) const;

@@ -17,22 +17,42 @@ struct LawName {
   MotionLaw law;
   std::string_view name;
 };
-constexpr std::array<LawName, 9> kLawNames = {{{MotionLaw::SimpleHarmonic, "harmonic"},
-                                               {MotionLaw::Cycloidal, "cycloidal"},
-                                               {MotionLaw::ModifiedTrapezoid, "modified-trapezoid"},
-                                               {MotionLaw::ModifiedSine, "modified-sine"},
-                                               {MotionLaw::Polynomial345, "3-4-5"},
-                                               {MotionLaw::Polynomial4567, "4-5-6-7"},
-                                               {MotionLaw::Polynomial, "polynomial"},
-                                               {MotionLaw::BSpline, "bspline"},
-                                               {MotionLaw::Scca, "scca"}}};
+constexpr std::array<LawName, 14> kLawNames = {
+    {{MotionLaw::SimpleHarmonic, "harmonic"},
+     {MotionLaw::Cycloidal, "cycloidal"},
+     {MotionLaw::ModifiedTrapezoid, "modified-trapezoid"},
+     {MotionLaw::ModifiedSine, "modified-sine"},
+     {MotionLaw::Polynomial345, "3-4-5"},
+     {MotionLaw::Polynomial4567, "4-5-6-7"},
+     {MotionLaw::Polynomial, "polynomial"},
+     {MotionLaw::BSpline, "bspline"},
+     {MotionLaw::Scca, "scca"},
+     {MotionLaw::ConstantAcceleration, "constant-acceleration"},
+     {MotionLaw::Cubic, "cubic"},
+     {MotionLaw::DoubleHarmonic, "double-harmonic"},
+     {MotionLaw::ConstantVelocity, "constant-velocity"},
+     {MotionLaw::Table, "table"}}};
 
-// The polynomial laws in the power basis; Norton, Cam Design and Manufacturing Handbook, polynomial functions
-// (3-4-5: 10x^3 - 15x^4 + 6x^5; 4-5-6-7: 35x^4 - 84x^5 + 70x^6 - 20x^7).
+// The polynomial laws in the power basis; Norton, Cam Design and Manufacturing Handbook, polynomial
+// functions (3-4-5: 10x^3 - 15x^4 + 6x^5; 4-5-6-7: 35x^4 - 84x^5 + 70x^6 - 20x^7); Rothbart, Cams
+// (1956), cubic curve (3x^2 - 2x^3: the cubic with S' = 0 at both ends).
 const Polynomial& law_polynomial(MotionLaw law) {
+  static const Polynomial cubic(0.0, 1.0, {0, 0, 3, -2});
   static const Polynomial p345(0.0, 1.0, {0, 0, 0, 10, -15, 6});
   static const Polynomial p4567(0.0, 1.0, {0, 0, 0, 0, 35, -84, 70, -20});
-  return law == MotionLaw::Polynomial345 ? p345 : p4567;
+  return law == MotionLaw::Cubic ? cubic : law == MotionLaw::Polynomial345 ? p345 : p4567;
+}
+
+// Double harmonic rise on all of [0, 1]: S = ½[(1 − cos πx) − ¼(1 − cos 2πx)]; Rothbart, Cams
+// (1956), double harmonic curve. S''(0) = 0 but S''(1) = −π²: meant to run straight into a return.
+void double_harmonic(double x, double* o) {
+  const double s1 = std::sin(kPi * x), c1 = std::cos(kPi * x);
+  const double s2 = std::sin(2 * kPi * x), c2 = std::cos(2 * kPi * x);
+  o[0] = 0.5 * ((1 - c1) - 0.25 * (1 - c2));
+  o[1] = kPi / 2 * (s1 - 0.5 * s2);
+  o[2] = kPi * kPi / 2 * (c1 - c2);
+  o[3] = kPi * kPi * kPi / 2 * (2 * s2 - s1);
+  o[4] = kPi * kPi * kPi * kPi / 2 * (4 * c2 - c1);
 }
 
 // A sine acceleration pulse a = A sin(w x) from rest at x = 0 (derivatives s..s'''').
@@ -105,11 +125,23 @@ void half_law(MotionLaw law, double x, double* o) {
     }
     case MotionLaw::ModifiedTrapezoid: return modified_trapezoid_half(x, o);
     case MotionLaw::ModifiedSine: return modified_sine_half(x, o);
+    case MotionLaw::ConstantAcceleration:  // S = 2x² up to x = ½; Norton, Handbook, constant
+                                           // acceleration
+      o[0] = 2 * x * x;
+      o[1] = 4 * x;
+      o[2] = 4;
+      o[3] = o[4] = 0;
+      return;
+    case MotionLaw::Cubic:
     case MotionLaw::Polynomial345:
     case MotionLaw::Polynomial4567: return law_polynomial(law).derivatives(x, 4, o);
+    case MotionLaw::DoubleHarmonic:  // not antisymmetric: standard_law evaluates it whole
     case MotionLaw::Polynomial:
     case MotionLaw::BSpline:
-    case MotionLaw::Scca: break;
+    case MotionLaw::Scca:
+    case MotionLaw::ConstantVelocity:
+    case MotionLaw::Table:
+      break;
   }
   throw InputError("motion law '" + std::string(motion_law_name(law)) +
                    "' has no fixed normalised form: it is synthesised from endpoint constraints or "
@@ -134,13 +166,21 @@ MotionLaw parse_motion_law(std::string_view name) {
 
 bool is_standard_law(MotionLaw law) {
   return law != MotionLaw::Polynomial && law != MotionLaw::BSpline && law != MotionLaw::Scca &&
+         law != MotionLaw::ConstantVelocity && law != MotionLaw::Table &&
          motion_law_name(law) != "unknown";
 }
+
+bool is_antisymmetric_law(MotionLaw law) { return law != MotionLaw::DoubleHarmonic; }
 
 void standard_law(MotionLaw law, double x, int d, double* out) {
   if (d < 0 || d > 4) throw InputError("standard motion law: derivative order " + std::to_string(d) + " outside [0, 4]");
   x = std::clamp(x, 0.0, 1.0);
   double o[5];
+  if (law == MotionLaw::DoubleHarmonic) {
+    double_harmonic(x, o);
+    std::copy(o, o + d + 1, out);
+    return;
+  }
   const bool reflect = x > 0.5;
   half_law(law, reflect ? 1.0 - x : x, o);
   if (reflect) {  // S(x) = 1 - S(1-x), S^(k)(x) = (-1)^(k+1) S^(k)(1-x)
@@ -152,7 +192,9 @@ void standard_law(MotionLaw law, double x, int d, double* out) {
 }
 
 std::optional<Polynomial> standard_law_polynomial(MotionLaw law) {
-  if (law == MotionLaw::Polynomial345 || law == MotionLaw::Polynomial4567) return law_polynomial(law);
+  if (law == MotionLaw::Cubic || law == MotionLaw::Polynomial345 ||
+      law == MotionLaw::Polynomial4567)
+    return law_polynomial(law);
   return std::nullopt;
 }
 
@@ -160,6 +202,8 @@ std::vector<double> law_joins(MotionLaw law) {
   switch (law) {
     case MotionLaw::ModifiedTrapezoid: return {0.125, 0.375, 0.625, 0.875};
     case MotionLaw::ModifiedSine: return {0.125, 0.875};
+    case MotionLaw::ConstantAcceleration:
+      return {0.5};
     default: return {};
   }
 }

@@ -13,8 +13,6 @@
 namespace polarform {
 namespace {
 
-constexpr std::array<std::string_view, 3> kKindNames = {"dwell", "rise", "return"};
-
 [[noreturn]] void fail(const SegmentSpec& spec, const std::string& why) {
   throw InputError("segment '" + spec.name + "': " + why);
 }
@@ -31,6 +29,14 @@ void validate(const SegmentSpec& spec) {
     fail(spec, "lift must be a positive number of mm for a " + std::string(segment_kind_name(spec.kind)) +
                    ", got " + number_text(spec.lift));
   if (motion_law_name(spec.law) == "unknown") fail(spec, "unknown motion law");
+  if (spec.kind == SegmentKind::RiseReturn && !has_normalised_form(spec.law) &&
+      spec.law != MotionLaw::Polynomial)
+    fail(spec, "a rise-return takes a law with a closed form or 'polynomial', not '" +
+                   std::string(motion_law_name(spec.law)) + "'");
+  if (spec.kind == SegmentKind::RiseReturn && spec.law == MotionLaw::ConstantVelocity &&
+      spec.blend == 0.0)
+    fail(spec,
+         "a rise-return at constant velocity needs blend > 0 (the velocity reverses at the top)");
   if (spec.law == MotionLaw::Polynomial || spec.law == MotionLaw::BSpline) {
     if (spec.constrained_order < 0 || spec.constrained_order > 3)
       fail(spec, "constrained_order " + std::to_string(spec.constrained_order) + " outside [0, 3]");
@@ -62,17 +68,6 @@ void bspline_derivatives(const BSplineFunction& f, double u, int d, double* out)
 
 }  // namespace
 
-std::string_view segment_kind_name(SegmentKind kind) {
-  const auto i = static_cast<std::size_t>(kind);
-  return i < kKindNames.size() ? kKindNames[i] : "unknown";
-}
-
-SegmentKind parse_segment_kind(std::string_view name) {
-  for (std::size_t i = 0; i < kKindNames.size(); ++i)
-    if (kKindNames[i] == name) return static_cast<SegmentKind>(i);
-  throw InputError("unknown segment kind '" + std::string(name) + "'; expected one of: dwell, rise, return");
-}
-
 MotionSegment::MotionSegment(SegmentSpec spec, double start_level) : spec_(std::move(spec)), start_level_(start_level) {
   validate(spec_);
   const double signed_lift =
@@ -80,39 +75,50 @@ MotionSegment::MotionSegment(SegmentSpec spec, double start_level) : spec_(std::
   end_level_ = start_level_ + signed_lift;
   if (spec_.kind == SegmentKind::Dwell) {
     shape_ = Polynomial(spec_.start, spec_.end, {start_level_});
-  } else if (is_standard_law(spec_.law)) {
-    shape_ = StandardLaw{spec_.law, signed_lift, std::nullopt};
-  } else if (spec_.law == MotionLaw::Scca) {
-    try {
-      shape_ = StandardLaw{spec_.law, signed_lift, SccaLaw(spec_.scca)};
-    } catch (const InputError& e) {
-      fail(spec_, e.what());
-    }
-  } else {
-    const int order = spec_.constrained_order;
-    const std::vector<double> a = endpoint_values(start_level_, spec_.at_start, order);
-    const std::vector<double> b = endpoint_values(end_level_, spec_.at_end, order);
-    try {
+    return;
+  }
+  try {
+    if (spec_.kind == SegmentKind::RiseReturn && spec_.law == MotionLaw::Polynomial) {
+      // Norton, Handbook, single-dwell 3-4-5-6 polynomial: 64x³ − 192x⁴ + 192x⁵ − 64x⁶
+      shape_ = Polynomial(spec_.start, spec_.end, {0, 0, 0, 64, -192, 192, -64})
+                   .affine(spec_.lift, start_level_);
+    } else if (has_normalised_form(spec_.law)) {
+      const double lift = spec_.kind == SegmentKind::Return ? -spec_.lift : spec_.lift;
+      shape_ = ScaledLaw{NormalisedLaw(spec_.kind, spec_.law, spec_.scca, spec_.blend), lift};
+    } else if (spec_.law == MotionLaw::Table) {
+      shape_ = table_shape();
+    } else {
+      const int order = spec_.constrained_order;
+      const std::vector<double> a = endpoint_values(start_level_, spec_.at_start, order);
+      const std::vector<double> b = endpoint_values(end_level_, spec_.at_end, order);
       if (spec_.law == MotionLaw::Polynomial)
         shape_ = hermite_polynomial(spec_.start, spec_.end, a, b);
       else
         shape_ = smoothest_bspline(spec_.start, spec_.end, a, b, spec_.bspline);
-    } catch (const InputError& e) {
-      fail(spec_, e.what());
     }
+  } catch (const InputError& e) {
+    fail(spec_, e.what());
   }
+}
+
+// The table's normalised spline mapped onto the segment: knots θ = start + βx, values
+// start_level ± lift·S.
+BSplineFunction MotionSegment::table_shape() const {
+  const BSplineFunction normalised = interpolate_motion_table(spec_.table);
+  Knots knots = normalised.knots();
+  const double beta = spec_.end - spec_.start;
+  for (double& k : knots) k = k == 1.0 ? spec_.end : spec_.start + beta * k;
+  const double lift = spec_.kind == SegmentKind::Return ? -spec_.lift : spec_.lift;
+  const Eigen::VectorXd values = (lift * normalised.values()).array() + start_level_;
+  return BSplineFunction(normalised.degree(), std::move(knots), values);
 }
 
 void MotionSegment::derivatives(double theta, int d, double* out) const {
   if (d < 0 || d > 4) throw InputError("segment '" + spec_.name + "': derivative order " + std::to_string(d) + " outside [0, 4]");
   theta = std::clamp(theta, spec_.start, spec_.end);
-  if (const auto* law = std::get_if<StandardLaw>(&shape_)) {
+  if (const auto* law = std::get_if<ScaledLaw>(&shape_)) {
     const double beta = spec_.end - spec_.start;
-    const double x = (theta - spec_.start) / beta;
-    if (law->scca)
-      law->scca->derivatives(x, d, out);
-    else
-      standard_law(law->law, x, d, out);
+    law->law.derivatives((theta - spec_.start) / beta, d, out);
     double scale = law->signed_lift;  // h / β^k
     for (int k = 0; k <= d; ++k, scale /= beta) out[k] *= scale;
     out[0] += start_level_;
@@ -124,15 +130,23 @@ void MotionSegment::derivatives(double theta, int d, double* out) const {
 }
 
 std::optional<BSplineFunction> MotionSegment::exact() const {
-  if (const auto* law = std::get_if<StandardLaw>(&shape_)) {
-    const std::optional<Polynomial> normalised = standard_law_polynomial(law->law);
-    if (!normalised) return std::nullopt;
+  if (const auto* law = std::get_if<ScaledLaw>(&shape_)) {
+    const std::optional<Polynomial> normalised = standard_law_polynomial(spec_.law);
+    if (!normalised || spec_.kind == SegmentKind::RiseReturn) return std::nullopt;
     const Polynomial p =
         Polynomial(spec_.start, spec_.end, normalised->coefficients()).affine(law->signed_lift, start_level_);
     return p.bezier(p.degree());
   }
   if (const auto* poly = std::get_if<Polynomial>(&shape_)) return poly->bezier(poly->degree());
   return std::get<BSplineFunction>(shape_);
+}
+
+std::vector<double> MotionSegment::joins() const {
+  const auto* law = std::get_if<ScaledLaw>(&shape_);
+  if (!law) return {};
+  std::vector<double> out;
+  for (double x : law->law.joins()) out.push_back(spec_.start + x * (spec_.end - spec_.start));
+  return out;
 }
 
 }  // namespace polarform

@@ -1,27 +1,24 @@
-// One segment of a cam program: a dwell, rise or return over [start, end] (radians) with its
-// motion law, and the displacement s(θ) it produces with exact derivatives. SegmentSpec is the
-// plain description (what project files store); MotionSegment is the validated, evaluable segment.
-// Units: angles in radians, displacement in mm, derivatives in mm/rad^k.
+// One segment of a cam program: a dwell, rise, return or rise–return over [start, end] (radians)
+// with its motion law, and the displacement s(θ) it produces with exact derivatives. SegmentSpec is
+// the plain description (what project files store); MotionSegment is the validated, evaluable
+// segment. Units: angles in radians, displacement in mm, derivatives in mm/rad^k.
 #pragma once
 
 #include <optional>
 #include <string>
-#include <string_view>
 #include <variant>
+#include <vector>
 
 #include "designers/cam/motion_law.h"
+#include "designers/cam/motion_table.h"
+#include "designers/cam/normalised_law.h"
 #include "designers/cam/polynomial.h"
 #include "designers/cam/scca_law.h"
+#include "designers/cam/segment_kind.h"
 #include "designers/cam/smoothest_bspline.h"
 #include "src/nurbs/bspline.h"
 
 namespace polarform {
-
-enum class SegmentKind { Dwell, Rise, Return };
-
-std::string_view segment_kind_name(SegmentKind kind);  // "dwell", "rise", "return"
-// Throws InputError naming the unknown kind and listing the valid names.
-SegmentKind parse_segment_kind(std::string_view name);
 
 // Prescribed derivatives of s at one end of a polynomial or B-spline segment: the actual
 // derivatives of s in mm/rad, mm/rad², mm/rad³ (so a return's velocity is negative).
@@ -38,8 +35,12 @@ struct SegmentSpec {
   SegmentKind kind = SegmentKind::Dwell;
   double start = 0.0;  // rad
   double end = 0.0;    // rad
-  double lift = 0.0;   // mm: > 0 for a rise or return, 0 for a dwell
-  MotionLaw law = MotionLaw::Cycloidal;  // rise and return only
+  double lift = 0.0;   // mm: > 0 for a rise, return or rise–return, 0 for a dwell
+  // Rise, return and rise–return. A rise–return takes the laws with a normalised form
+  // (normalised_law.h) and "polynomial": the single polynomial 64x³(1 − x)³ of least degree with
+  // s = v = a = 0 at both ends and s = lift at the middle (Norton, Handbook, single-dwell
+  // 3-4-5-6 polynomial).
+  MotionLaw law = MotionLaw::Cycloidal;
   // Polynomial and B-spline laws: displacement is always met at both ends; derivatives 1..order
   // (velocity, acceleration, jerk) are prescribed at both ends, order in [0, 3]. Order 2 with zero
   // values is Bae 2002, eq. (5.1).
@@ -48,6 +49,10 @@ struct SegmentSpec {
   EndpointDerivatives at_end;
   BSplineLawSettings bspline;  // B-spline law only
   SccaParameters scca;         // SCCA law only
+  // Constant-velocity law only: the fraction of the segment in each cycloidal blend, in [0, ½]. 0
+  // (no blends) only between neighbours that move at the same velocity (CamProgram checks).
+  double blend = 0.2;
+  MotionTable table;  // table law only
 
   bool operator==(const SegmentSpec&) const = default;
 };
@@ -67,20 +72,24 @@ class MotionSegment {
 
   // s, s', ..., s^(d) at θ (clamped to [start, end]) into out[0..d], d <= 4; mm/rad^k.
   void derivatives(double theta, int d, double* out) const;
-  // The exact B-spline form of s on [start, end] when s is piecewise polynomial (dwell,
-  // 3-4-5, 4-5-6-7, polynomial, B-spline laws); nullopt for the trigonometric laws.
+  // The exact B-spline form of s on [start, end] when s is polynomial or a B-spline (dwell,
+  // cubic, 3-4-5, 4-5-6-7 on a rise or return; polynomial, B-spline and table laws); nullopt for
+  // the others.
   std::optional<BSplineFunction> exact() const;
+  // Angles in (start, end) where the law's pieces join (where the jerk may jump), increasing.
+  std::vector<double> joins() const;
 
  private:
-  struct StandardLaw {
-    MotionLaw law;
+  BSplineFunction table_shape() const;
+
+  struct ScaledLaw {
+    NormalisedLaw law;  // SCCA integrated once
     double signed_lift;
-    std::optional<SccaLaw> scca;  // the SCCA law, integrated once
   };
   SegmentSpec spec_;
   double start_level_ = 0.0;
   double end_level_ = 0.0;
-  std::variant<StandardLaw, Polynomial, BSplineFunction> shape_;
+  std::variant<Polynomial, ScaledLaw, BSplineFunction> shape_;
 };
 
 }  // namespace polarform

@@ -8,6 +8,7 @@
 
 #include "export/atomic_file.h"
 #include "export/xml_escape.h"
+#include "jobs/project/motion_table_csv.h"
 #include "jobs/project/xml_reader.h"
 #include "src/error.h"
 #include "src/number_text.h"
@@ -66,7 +67,7 @@ void read_constraints(const XmlElementReader& seg, SegmentSpec& spec, const std:
 SegmentSpec read_segment(const XmlElementReader& r, double from, double level,
                          const std::string& file, std::vector<UnknownName>& unknown) {
   SegmentSpec s;
-  s.kind = parse_segment_kind(r.choice("kind", {"dwell", "rise", "return"}));
+  s.kind = parse_segment_kind(r.choice("kind", {"dwell", "rise", "return", "rise-return"}));
   s.name = r.text("name", "");
   s.start = r.number("from", from * kDegreesPerRadian) * kRadiansPerDegree;
   s.end = r.number("to") * kRadiansPerDegree;
@@ -78,13 +79,28 @@ SegmentSpec read_segment(const XmlElementReader& r, double from, double level,
   } catch (const InputError& e) {
     r.fail("law", std::string("a motion law (") + e.what() + ")");
   }
-  if (s.kind == SegmentKind::Rise)
-    s.lift = r.positive("lift");
-  else
+  if (s.kind == SegmentKind::Return)
     s.lift = r.positive("lift", level);
+  else
+    s.lift = r.positive("lift");
   if (!(s.lift > 0)) r.fail("lift", "a lift > 0 mm (the follower is already at the base circle)");
-  if (s.law == MotionLaw::Polynomial || s.law == MotionLaw::BSpline)
+  if ((s.law == MotionLaw::Polynomial && s.kind != SegmentKind::RiseReturn) ||
+      s.law == MotionLaw::BSpline)
     read_constraints(r, s, file, unknown);
+  if (s.law ==
+      MotionLaw::ConstantVelocity) {  // the blend fraction at each end (constant_velocity_law.h)
+    s.blend = r.positive("blend", s.blend, true);
+    if (!(s.blend <= 0.5)) r.fail("blend", "a fraction of the segment at each end in [0, 0.5]");
+  }
+  if (s.law == MotionLaw::Table) {  // a table file relative to the project (motion_table_csv.h)
+    if (s.kind == SegmentKind::RiseReturn) r.fail("law", "a rise or return for a motion table");
+    const TableEnds ends =
+        r.choice("ends", {"rest", "free"}, "rest") == "rest" ? TableEnds::Rest : TableEnds::Free;
+    const std::string name = r.text("file", "");
+    if (name.empty()) r.fail("file", "the motion table's file name (CSV, relative to the project)");
+    s.table =
+        read_motion_table(file, name, {s.start, s.end, s.lift, s.kind == SegmentKind::Rise}, ends);
+  }
   if (s.law == MotionLaw::Scca) {  // the fractions b, c, d (scca_law.h)
     s.scca.b = r.positive("b", s.scca.b, true);
     s.scca.c = r.positive("c", s.scca.c, true);
@@ -331,11 +347,19 @@ std::string cam_project_xml(const CamProject& p) {
     }
     attr("from", number(degrees_for(s.start)));
     attr("to", number(degrees_for(s.end)));
-    const bool constrained = s.law == MotionLaw::Polynomial || s.law == MotionLaw::BSpline;
+    const bool constrained =
+        (s.law == MotionLaw::Polynomial && s.kind != SegmentKind::RiseReturn) ||
+        s.law == MotionLaw::BSpline;
     if (s.kind != SegmentKind::Dwell && s.law == MotionLaw::Scca) {
       attr("b", number(s.scca.b));
       attr("c", number(s.scca.c));
       attr("d", number(s.scca.d));
+    }
+    if (s.kind != SegmentKind::Dwell && s.law == MotionLaw::ConstantVelocity)
+      attr("blend", number(s.blend));
+    if (s.kind != SegmentKind::Dwell && s.law == MotionLaw::Table) {
+      attr("file", s.table.file);
+      attr("ends", s.table.ends == TableEnds::Rest ? "rest" : "free");
     }
     if (s.kind != SegmentKind::Dwell && s.law == MotionLaw::BSpline) {
       attr("degree", std::to_string(s.bspline.degree));

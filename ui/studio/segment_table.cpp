@@ -18,12 +18,23 @@ namespace {
 
 constexpr double kDefaultLift = 10.0;  // mm, for a dwell turned into a rise or return
 
-constexpr std::array<MotionLaw, 9> kLaws = {
-    MotionLaw::Cycloidal,         MotionLaw::SimpleHarmonic, MotionLaw::ModifiedSine,
-    MotionLaw::ModifiedTrapezoid, MotionLaw::Scca,           MotionLaw::Polynomial345,
-    MotionLaw::Polynomial4567,    MotionLaw::Polynomial,     MotionLaw::BSpline};
-constexpr std::array<SegmentKind, 3> kKinds = {SegmentKind::Dwell, SegmentKind::Rise,
-                                               SegmentKind::Return};
+// A table is shown but not offered: its rows come from a file the project names.
+constexpr std::array<MotionLaw, 14> kLaws = {MotionLaw::Cycloidal,
+                                             MotionLaw::SimpleHarmonic,
+                                             MotionLaw::ModifiedSine,
+                                             MotionLaw::ModifiedTrapezoid,
+                                             MotionLaw::Scca,
+                                             MotionLaw::Polynomial345,
+                                             MotionLaw::Polynomial4567,
+                                             MotionLaw::ConstantAcceleration,
+                                             MotionLaw::Cubic,
+                                             MotionLaw::DoubleHarmonic,
+                                             MotionLaw::ConstantVelocity,
+                                             MotionLaw::Polynomial,
+                                             MotionLaw::BSpline,
+                                             MotionLaw::Table};
+constexpr std::array<SegmentKind, 4> kKinds = {SegmentKind::Dwell, SegmentKind::Rise,
+                                               SegmentKind::Return, SegmentKind::RiseReturn};
 
 template <class Enum, std::size_t N>
 int index_of(const std::array<Enum, N>& values, Enum v) {
@@ -86,7 +97,8 @@ bool SegmentTable::draw_row(std::vector<SegmentSpec>& segments, int i) {
   ImGui::TableNextColumn();
   ImGui::SetNextItemWidth(-FLT_MIN);
   int kind = index_of(kKinds, s.kind);
-  static constexpr std::array<std::string_view, 3> kKindNames = {"dwell", "rise", "return"};
+  static constexpr std::array<std::string_view, 4> kKindNames = {"dwell", "rise", "return",
+                                                                 "rise-return"};
   if (combo("##kind", kind, kKindNames)) {
     set_kind(s, kKinds[kind], kDefaultLift);
     changed = true;
@@ -100,7 +112,7 @@ bool SegmentTable::draw_row(std::vector<SegmentSpec>& segments, int i) {
     std::array<std::string_view, kLaws.size()> names;
     for (std::size_t k = 0; k < kLaws.size(); ++k) names[k] = motion_law_name(kLaws[k]);
     int law = index_of(kLaws, s.law);
-    if (combo("##law", law, names)) {
+    if (combo("##law", law, names) && kLaws[law] != MotionLaw::Table) {
       s.law = kLaws[law];
       changed = true;
     }
@@ -193,6 +205,10 @@ bool SegmentTable::draw_details(SegmentSpec& s) {
     help_marker(
         "SCCA (Norton): b = 0.25, c = 0.5 is the modified trapezoid; b = 0.25, c = 0 the "
         "modified sine; b = 0.5, c = 0 the cycloidal; b = c = 0 the harmonic law.");
+    return changed;
+  }
+  if (s.kind != SegmentKind::Dwell && s.law == MotionLaw::ConstantVelocity) {
+    changed |= drag_number("blend (each end)", s.blend, 0.005, 0.0, 0.5, "%.3f");
     return changed;
   }
   if (s.kind == SegmentKind::Dwell ||

@@ -12,6 +12,7 @@
 #include "designers/cam/continuity.h"
 #include "src/error.h"
 #include "src/units.h"
+#include "tests/designers/cam/segment_support.h"
 
 namespace polarform {
 namespace {
@@ -20,13 +21,8 @@ constexpr double pi = std::numbers::pi;
 
 SegmentSpec segment(std::string name, SegmentKind kind, double from_deg, double to_deg, double lift = 0,
                     MotionLaw law = MotionLaw::Cycloidal) {
-  SegmentSpec s;
+  SegmentSpec s = test::segment(kind, from_deg, to_deg, lift, law);
   s.name = std::move(name);
-  s.kind = kind;
-  s.start = from_deg * kRadiansPerDegree;
-  s.end = to_deg * kRadiansPerDegree;
-  s.lift = lift;
-  s.law = law;
   return s;
 }
 

@@ -1,6 +1,6 @@
 // Test oracles shared by the cam tests: an 8th-order central finite difference (an independent
-// check of exact derivatives, never used by the library) and a dense-sampling + ternary-search
-// maximiser (locates extrema without reading formulas back).
+// check of exact derivatives, never used by the library), a dense-sampling + ternary-search
+// maximiser (locates extrema without reading formulas back) and the peak factors it measures.
 #pragma once
 
 #include <cmath>
@@ -37,6 +37,18 @@ inline Maximum dense_maximum(const std::function<double(double)>& f, double a, d
   }
   const double x = 0.5 * (lo + hi);
   return f(x) > best_value ? Maximum{f(x), x} : Maximum{best_value, a + (b - a) * best / n};
+}
+
+// The peak factors Cv, Ca, Cj of a normalised law, law(x, k) = S^(k)(x): the maxima of |S^(k)|
+// on [0, 1] for k = 1, 2, 3, measured.
+struct PeakFactors {
+  double cv, ca, cj;
+};
+inline PeakFactors peak_factors(const std::function<double(double, int)>& law) {
+  double peaks[3];
+  for (int k = 1; k <= 3; ++k)
+    peaks[k - 1] = dense_maximum([&](double x) { return std::abs(law(x, k)); }, 0, 1).value;
+  return {peaks[0], peaks[1], peaks[2]};
 }
 
 }  // namespace polarform::test

@@ -15,21 +15,14 @@
 #include "src/error.h"
 #include "src/units.h"
 #include "tests/designers/cam/cam_test_support.h"
+#include "tests/designers/cam/segment_support.h"
 
 namespace polarform {
 namespace {
 
 constexpr double pi = std::numbers::pi;
 
-SegmentSpec segment(SegmentKind kind, double from_deg, double to_deg, double lift, MotionLaw law) {
-  SegmentSpec s;
-  s.kind = kind;
-  s.start = from_deg * kRadiansPerDegree;
-  s.end = to_deg * kRadiansPerDegree;
-  s.lift = lift;
-  s.law = law;
-  return s;
-}
+using test::segment;
 
 // Harmonic rise and return of 2d over 180° each: s = d (1 - cos θ).
 CamProgram eccentric_program(double d) {

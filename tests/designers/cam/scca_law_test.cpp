@@ -19,7 +19,8 @@ TEST(SccaLaw, SpecialCasesAreTheStandardLaws) {
   const struct {
     MotionLaw law;
     SccaParameters p;
-  } cases[] = {{MotionLaw::ModifiedTrapezoid, {0.25, 0.5, 0.25}},
+  } cases[] = {{MotionLaw::ConstantAcceleration, {0, 1, 0}},
+               {MotionLaw::ModifiedTrapezoid, {0.25, 0.5, 0.25}},
                {MotionLaw::SimpleHarmonic, {0, 0, 1}},
                {MotionLaw::ModifiedSine, {0.25, 0, 0.75}},
                {MotionLaw::Cycloidal, {0.5, 0, 0.5}}};

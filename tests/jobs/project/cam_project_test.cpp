@@ -245,7 +245,8 @@ TEST(CamProject, BrokenFilesGiveSpecificErrors) {
       {cam(kPlate, "<segment kind=\"rise\" law=\"parabolic\" lift=\"20\" to=\"180\"/>\n"),
        "cam.xml:3: <segment> attribute 'law': expected a motion law (unknown motion law "
        "'parabolic'; expected one of: harmonic, cycloidal, modified-trapezoid, modified-sine, "
-       "3-4-5, 4-5-6-7, polynomial, bspline, scca), got 'parabolic'"},
+       "3-4-5, 4-5-6-7, polynomial, bspline, scca, constant-acceleration, cubic, double-harmonic, "
+       "constant-velocity, table), got 'parabolic'"},
       {cam(kPlate,
            "<segment kind=\"rise\" law=\"cycloidal\" lift=\"20\" to=\"180\"/>\n"
            "<segment kind=\"return\" law=\"cycloidal\" to=\"300\"/>\n"),
@@ -265,7 +266,8 @@ TEST(CamProject, BrokenFilesGiveSpecificErrors) {
        "cam.xml:4: <segment> attribute 'to': expected an angle after the segment start 180°, got "
        "'120'"},
       {cam(kPlate, "<segment kind=\"lift\" to=\"360\"/>\n"),
-       "cam.xml:3: <segment> attribute 'kind': expected one of dwell|rise|return, got 'lift'"},
+       "cam.xml:3: <segment> attribute 'kind': expected one of dwell|rise|return|rise-return, got "
+       "'lift'"},
       {cam(kPlate, ""), "cam.xml:2: <cam>: no <segment> elements"},
       {cam("follower=\"roller\" base-radius=\"40\"", kSegments),
        "cam.xml:2: <cam> attribute 'roller-radius': expected a number (attribute is missing)"},

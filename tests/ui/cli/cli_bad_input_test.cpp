@@ -73,7 +73,7 @@ std::vector<BadProject> bad_projects() {
        ":3: <cam> attribute 'roller-radius': expected a number (attribute is missing)"},
       {"unknown_law", edited("cycloidal", "parabolic"), ":5: <segment> attribute 'law'"},
       {"unknown_kind", edited("kind=\"rise\"", "kind=\"hold\""),
-       ":5: <segment> attribute 'kind': expected one of dwell|rise|return, got 'hold'"},
+       ":5: <segment> attribute 'kind': expected one of dwell|rise|return|rise-return, got 'hold'"},
       {"angle_not_a_number", edited("to=\"180\"", "to=\"180deg\""),
        ":5: <segment> attribute 'to': expected a finite number, got '180deg'"},
       {"backwards_segment", edited("to=\"180\"", "to=\"80\""),
@@ -138,6 +138,20 @@ TEST(CliBadInput, BrokenProjectsLeaveAPreviousRunUntouched) {
       0);
   ASSERT_EQ(snapshot(scratch / "out").size(), 12u);
   expect_rejected_everywhere(scratch, scratch / "out");
+}
+
+// A motion table (law="table") that is not increasing in x: exit 2, one line naming the table's
+// file, line and field, nothing written.
+TEST(CliBadInput, ABrokenMotionTableExitsTwoNamingItsLineAndField) {
+  const ScratchDir scratch("bad_table");
+  spit(scratch / "motion.csv", "x,S\n0,0\n0.2,0.1\n0.4,0.3\n0.35,0.6\n0.8,0.9\n1,1\n");
+  const fs::path file = scratch / "table.xml";
+  spit(file, edited("law=\"cycloidal\"", "law=\"table\" file=\"motion.csv\""));
+  const CliRun run = run_cli({"cam", file.string(), "--out", (scratch / "out").string()}, scratch);
+  EXPECT_EQ(run.status, 2) << run.err;
+  EXPECT_EQ(run.err, "polarform: error: " + (scratch / "motion.csv").string() +
+                         ":5: x: expected x increasing strictly (after 0.4)\n");
+  EXPECT_FALSE(fs::exists(scratch / "out"));
 }
 
 struct BadCommand {
