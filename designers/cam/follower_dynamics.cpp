@@ -37,6 +37,24 @@ std::optional<double> losing_speed(double mass_a, double damping_v, double sprin
   return best;
 }
 
+// The follower's equation in its own coordinate q: Q = M q̈ + C q̇ + K q + Q₀ with q̈ = ω² q'', q̇ = ω
+// q'
+// (' per radian of cam angle); the contact force F = Q (translating) or Q / lever (arm), the
+// camshaft torque T = Q q'·torque_scale.
+struct GeneralisedLoad {
+  double M, C, K,
+      Q0;  // translating: kg→N·s²/mm (m·1e-3), N·s/mm, N/mm, N; arm: kg·m², N·m·s/rad, N·m/rad, N·m
+  double q_scale;       // q per unit of s: 1 (mm), π/180 (° → rad)
+  double torque_scale;  // Q·q' → N·m: 1e-3 (N·mm), 1 (N·m)
+};
+
+GeneralisedLoad generalised(const FollowerLoad& l) {
+  if (l.arm)
+    return {l.inertia,        l.torsion_damping,      l.torsion_rate,
+            l.preload_torque, std::numbers::pi / 180, 1.0};
+  return {l.mass * 1e-3, l.damping, l.spring_rate, l.preload, 1.0, 1e-3};
+}
+
 }  // namespace
 
 double line_contact_stress(double force, double width, double r1, double r2, double youngs,
@@ -55,6 +73,13 @@ FollowerDynamics follower_dynamics(const std::vector<MotionSample>& motion, doub
         ">= 0 N/mm");
   check(load.preload >= 0 && std::isfinite(load.preload), "preload", load.preload, ">= 0 N");
   check(load.damping >= 0 && std::isfinite(load.damping), "damping", load.damping, ">= 0 N·s/mm");
+  check(load.inertia >= 0 && std::isfinite(load.inertia), "inertia", load.inertia, ">= 0 kg·m²");
+  check(load.torsion_rate >= 0 && std::isfinite(load.torsion_rate), "torsion rate",
+        load.torsion_rate, ">= 0 N·m/rad");
+  check(load.preload_torque >= 0 && std::isfinite(load.preload_torque), "preload torque",
+        load.preload_torque, ">= 0 N·m");
+  check(load.torsion_damping >= 0 && std::isfinite(load.torsion_damping), "torsion damping",
+        load.torsion_damping, ">= 0 N·m·s/rad");
   check(load.contact_width >= 0 && std::isfinite(load.contact_width), "contact width",
         load.contact_width, ">= 0 mm");
   check(load.youngs_modulus > 0 && std::isfinite(load.youngs_modulus), "Young's modulus",
@@ -62,16 +87,21 @@ FollowerDynamics follower_dynamics(const std::vector<MotionSample>& motion, doub
   check(load.poisson_ratio >= 0 && load.poisson_ratio < 0.5, "Poisson ratio", load.poisson_ratio,
         "in [0, 0.5)");
   const double w = rpm * 2 * std::numbers::pi / 60;  // rad/s
+  const GeneralisedLoad g = generalised(load);
   FollowerDynamics out;
   double fastest = std::numeric_limits<double>::infinity();
   for (const MotionSample& m : motion) {
-    // a [mm/rad²]·ω² = mm/s², ·1e-3 → m/s²; v [mm/rad]·ω = mm/s.
-    const double inertia = load.mass * 1e-3 * m.a, damping = load.damping * m.v;
-    const double spring = load.spring_rate * m.s + load.preload;
+    if (load.arm)
+      check(m.lever > 0, "lever of the contact force about the pivot [mm]", m.lever, "> 0");
+    // Per unit of the contact force: 1 (translating), 1000/lever (arm: N·m over a lever in mm).
+    const double per_load = load.arm ? 1e3 / m.lever : 1.0;
+    const double q = m.s * g.q_scale, dq = m.v * g.q_scale;
+    const double inertia = g.M * m.a * g.q_scale * per_load, damping = g.C * dq * per_load;
+    const double spring = (g.K * q + g.Q0) * per_load;
     DynamicsSample d;
     d.theta = m.theta;
     d.force = inertia * w * w + damping * w + spring;
-    d.torque = d.force * m.v * 1e-3;  // N · mm/rad → N·m
+    d.torque = d.force / per_load * dq * g.torque_scale;  // T = Q dq/dθ
     if (load.contact_width > 0)
       d.contact_stress =
           line_contact_stress(d.force, load.contact_width, roller_radius, m.contour_radius,
@@ -84,9 +114,9 @@ FollowerDynamics follower_dynamics(const std::vector<MotionSample>& motion, doub
     if (const auto speed = losing_speed(inertia, damping, spring))
       fastest = std::min(fastest, *speed);
     // The rate that makes F = 0 here at this speed, with the same preload.
-    if (m.s > 0)
-      out.min_spring_rate =
-          std::max(out.min_spring_rate, -(inertia * w * w + damping * w + load.preload) / m.s);
+    if (q > 0)
+      out.min_spring_rate = std::max(
+          out.min_spring_rate, -(inertia * w * w + damping * w + g.Q0 * per_load) / (q * per_load));
     out.samples.push_back(d);
   }
   out.jumps = out.least_force.force < 0;

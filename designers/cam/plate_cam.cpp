@@ -252,11 +252,15 @@ void PlateCam::oscillating_sample(const double* s, CamSample& out) const {
     const Eigen::Vector2d q(reference[0][0], reference[1][0]), dq(reference[0][1], reference[1][1]);
     const Eigen::Vector2d t = dq - sigma * perp(q), w = swing_sign_ * perp(q - pivot_);
     out.pressure_angle = pressure_angle_from(t, w.normalized(), sigma);
+    const Eigen::Vector2d x(contact[0][0],
+                            contact[1][0]);  // the push runs from x to the roller centre
+    out.arm_lever = swing_sign_ * cross(x - pivot_, (q - x).normalized());
     return;  // contour speed: the roller's generic |P'|(1 − Rr κ_pitch)
   }
   const Eigen::Vector2d n(-sa, ca), x(contact[0][0], contact[1][0]);
   const Eigen::Vector2d w = swing_sign_ * perp(x - pivot_);
   out.pressure_angle = pressure_angle_from(-sigma * perp(n), w.normalized(), sigma);
+  out.arm_lever = swing_sign_ * cross(x - pivot_, n);  // the face is pushed along its normal n
   // Support function of the contour against the line angle φ: ρ = h + d²h/dφ², |dX/dθ| = ρ |φ'|.
   const Jet h = (-pivot_.x()) * sin(a) + pivot_.y() * cos(a) + (-follower_.face_offset);
   const Jet phi_rate = a.derivative() + double(-sigma);

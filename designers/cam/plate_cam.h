@@ -72,6 +72,10 @@ struct CamSample {
   // +x of the fixed frame (translating, σ s' − e), from the foot of the pivot's perpendicular
   // (oscillating, along the face's direction J n); 0 for other followers.
   double face_contact = 0.0;
+  // Oscillating followers: the moment arm (mm) about the pivot of the contact force the cam exerts
+  // along the contact normal, signed positive when that force swings the arm away from the cam
+  // (torque about the pivot = force · arm_lever); 0 for translating followers.
+  double arm_lever = 0.0;
 };
 
 class PlateCam {

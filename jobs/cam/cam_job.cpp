@@ -88,6 +88,7 @@ void sample_plate(const PlateCam& cam, int per_revolution, MotionCurves& m, Plat
       p.normal.push_back(n.norm() > 0 ? n.normalized() : contour[0].normalized());
       p.curvature.push_back(c.contour_curvature);
       p.face_contact.push_back(c.face_contact);
+      p.arm_lever.push_back(c.arm_lever);
     }
 }
 
@@ -227,13 +228,14 @@ FollowerDynamics plate_dynamics(const CamDesignStage& design, const MotionCurves
   const Follower& follower = design.project.cam.follower;
   FollowerLoad load = *design.project.load;
   if (follower.kind == FollowerKind::KnifeEdge) load.contact_width = 0;
-  const double r1 = follower.kind == FollowerKind::Roller ? follower.roller_radius
-                                                          : std::numeric_limits<double>::infinity();
+  const double r1 =
+      has_roller(follower.kind) ? follower.roller_radius : std::numeric_limits<double>::infinity();
   std::vector<MotionSample> motion;
   for (std::size_t i = 0; i < m.theta.size(); ++i)
     motion.push_back({m.theta[i], m.s[i], m.v[i], m.a[i],
                       curves.curvature[i] != 0 ? 1 / curves.curvature[i]
-                                               : std::numeric_limits<double>::infinity()});
+                                               : std::numeric_limits<double>::infinity(),
+                      curves.arm_lever[i]});
   return follower_dynamics(motion, design.project.cam.rpm, r1, load);
 }
 

@@ -66,6 +66,7 @@ struct PlateCurves {
   std::vector<Eigen::Vector2d> normal;  // unit, pointing out of the cam
   std::vector<double> curvature;        // signed contour curvature, 1/mm (> 0 convex)
   std::vector<double> face_contact;     // flat faces: CamSample::face_contact, mm
+  std::vector<double> arm_lever;        // oscillating followers: CamSample::arm_lever, mm
 };
 
 struct PlateCamAnalysis {

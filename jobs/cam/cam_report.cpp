@@ -125,19 +125,26 @@ void add_analysis_fields(json& j, const CamDesignStage& d, const CamAnalysisStag
   j["dynamics"] = nullptr;
   if (const auto& dyn = r.dynamics) {
     const FollowerLoad& load = *d.project.load;
-    j["dynamics"] = {{"mass_kg", load.mass},
-                     {"spring_rate_n_per_mm", load.spring_rate},
-                     {"preload_n", load.preload},
-                     {"damping_ns_per_mm", load.damping},
-                     {"min_contact_force_n", dyn->least_force.force},
-                     {"min_contact_force_at_deg", dyn->least_force.theta * kDegreesPerRadian},
-                     {"jumps", dyn->jumps},
-                     {"jump_rpm", dyn->jump_rpm ? json(*dyn->jump_rpm) : json(nullptr)},
-                     {"min_spring_rate_n_per_mm", dyn->min_spring_rate},
-                     {"max_torque_nm", dyn->largest_torque.torque},
-                     {"max_torque_at_deg", dyn->largest_torque.theta * kDegreesPerRadian},
-                     {"max_contact_stress_mpa", dyn->largest_stress.contact_stress},
-                     {"max_contact_stress_at_deg", dyn->largest_stress.theta * kDegreesPerRadian}};
+    // The spring and the least rate that keeps contact: N/mm, or N·m/rad for an arm.
+    j["dynamics"] = load.arm ? json{{"inertia_kg_m2", load.inertia},
+                                    {"torsion_rate_nm_per_rad", load.torsion_rate},
+                                    {"preload_torque_nm", load.preload_torque},
+                                    {"torsion_damping_nms_per_rad", load.torsion_damping}}
+                             : json{{"mass_kg", load.mass},
+                                    {"spring_rate_n_per_mm", load.spring_rate},
+                                    {"preload_n", load.preload},
+                                    {"damping_ns_per_mm", load.damping}};
+    j["dynamics"].update(
+        {{"min_contact_force_n", dyn->least_force.force},
+         {"min_contact_force_at_deg", dyn->least_force.theta * kDegreesPerRadian},
+         {"jumps", dyn->jumps},
+         {"jump_rpm", dyn->jump_rpm ? json(*dyn->jump_rpm) : json(nullptr)},
+         {load.arm ? "min_torsion_rate_nm_per_rad" : "min_spring_rate_n_per_mm",
+          dyn->min_spring_rate},
+         {"max_torque_nm", dyn->largest_torque.torque},
+         {"max_torque_at_deg", dyn->largest_torque.theta * kDegreesPerRadian},
+         {"max_contact_stress_mpa", dyn->largest_stress.contact_stress},
+         {"max_contact_stress_at_deg", dyn->largest_stress.theta * kDegreesPerRadian}});
   }
 }
 

@@ -122,12 +122,22 @@ SegmentSpec read_segment(const XmlElementReader& r, double from, double level,
 
 // <dynamics mass="kg" spring-rate="N/mm" preload="N" damping="N·s/mm" contact-width="mm"
 //           youngs-modulus="MPa" poisson-ratio="0.3"/>; per-length quantities in the file's unit.
-FollowerLoad read_dynamics(const XmlElementReader& r, double unit) {
+// An oscillating follower's arm instead: inertia="kg·m²" torsion-rate="N·m/rad"
+// preload-torque="N·m" torsion-damping="N·m·s/rad" (no lengths).
+FollowerLoad read_dynamics(const XmlElementReader& r, double unit, bool arm) {
   FollowerLoad l;
-  l.mass = r.positive("mass");
-  l.spring_rate = r.positive("spring-rate", 0.0, true) / unit;
-  l.preload = r.positive("preload", 0.0, true);
-  l.damping = r.positive("damping", 0.0, true) / unit;
+  l.arm = arm;
+  if (arm) {
+    l.inertia = r.positive("inertia");
+    l.torsion_rate = r.positive("torsion-rate", 0.0, true);
+    l.preload_torque = r.positive("preload-torque", 0.0, true);
+    l.torsion_damping = r.positive("torsion-damping", 0.0, true);
+  } else {
+    l.mass = r.positive("mass");
+    l.spring_rate = r.positive("spring-rate", 0.0, true) / unit;
+    l.preload = r.positive("preload", 0.0, true);
+    l.damping = r.positive("damping", 0.0, true) / unit;
+  }
   l.contact_width = r.positive("contact-width", 0.0, true) * unit;
   l.youngs_modulus = r.positive("youngs-modulus", l.youngs_modulus);
   l.poisson_ratio = r.positive("poisson-ratio", l.poisson_ratio, true);
@@ -283,11 +293,7 @@ CamProject parse_cam_project(const std::string& text, const std::string& file,
   }
   if (const XMLElement* dynamics = root.child("dynamics")) {
     const XmlElementReader r(dynamics, file);
-    if (is_oscillating(p.cam.follower.kind))
-      throw InputError(r.where() +
-                       ": <dynamics> needs a translating follower (an oscillating arm's "
-                       "inertia and torsion spring are not modelled yet)");
-    p.load = read_dynamics(r, unit);
+    p.load = read_dynamics(r, unit, is_oscillating(p.cam.follower.kind));
     r.collect_unknown_names(unknown);
   }
   root.collect_unknown_names(unknown);
@@ -388,10 +394,17 @@ std::string cam_project_xml(const CamProject& p) {
   out << "/>\n";
   if (p.load) {
     out << "  <dynamics";
-    attr("mass", number(p.load->mass));
-    attr("spring-rate", number(p.load->spring_rate));
-    attr("preload", number(p.load->preload));
-    attr("damping", number(p.load->damping));
+    if (p.load->arm) {
+      attr("inertia", number(p.load->inertia));
+      attr("torsion-rate", number(p.load->torsion_rate));
+      attr("preload-torque", number(p.load->preload_torque));
+      attr("torsion-damping", number(p.load->torsion_damping));
+    } else {
+      attr("mass", number(p.load->mass));
+      attr("spring-rate", number(p.load->spring_rate));
+      attr("preload", number(p.load->preload));
+      attr("damping", number(p.load->damping));
+    }
     attr("contact-width", number(p.load->contact_width));
     attr("youngs-modulus", number(p.load->youngs_modulus));
     attr("poisson-ratio", number(p.load->poisson_ratio));

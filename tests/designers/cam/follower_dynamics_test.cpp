@@ -59,6 +59,44 @@ TEST(FollowerDynamics, HarmonicRiseJumpsAtTheClosedFormSpeed) {
   EXPECT_NEAR(fast.samples[360].torque, fast.samples[360].force * mid.v * 1e-3, 1e-12);
 }
 
+// An arm: the swing q = h/2 (1 − cos πθ/β) in degrees, the contact force's lever about the pivot
+// fixed at ℓ. The torque I q̈ + k q + T₀ about the pivot (q in rad) first falls to zero at θ = β
+// when ω² = (k h + T₀) / (I h π²/(2β²)); the contact force is the torque over the lever, the
+// camshaft torque the arm's torque times dq/dθ.
+TEST(FollowerDynamics, AnArmJumpsAtTheClosedFormSpeedAndPushesWithTorqueOverLever) {
+  const double h_deg = 15, h = h_deg * kPi / 180, beta = kPi / 2, inertia = 0.02, k = 40, t0 = 8,
+               lever = 120;
+  FollowerLoad load;
+  load.arm = true;
+  load.inertia = inertia;
+  load.torsion_rate = k;
+  load.preload_torque = t0;
+  std::vector<MotionSample> motion = harmonic_rise(h_deg, beta);
+  for (MotionSample& m : motion) m.lever = lever;
+  const double w = std::sqrt((k * h + t0) / (inertia * h * kPi * kPi / (2 * beta * beta)));
+  const double rpm = w * 60 / (2 * kPi);
+  const FollowerDynamics slow = follower_dynamics(motion, 0.8 * rpm, 10, load);
+  ASSERT_TRUE(slow.jump_rpm);
+  EXPECT_NEAR(*slow.jump_rpm, rpm, 1e-9 * rpm);
+  EXPECT_FALSE(slow.jumps);
+  EXPECT_TRUE(follower_dynamics(motion, 1.01 * rpm, 10, load).jumps);
+  const double w2 = 0.8 * w;
+  for (int i : {0, 200, 360, 600, 720}) {
+    const MotionSample& m = motion[i];
+    const double q = m.s * kPi / 180, dq = m.v * kPi / 180, ddq = m.a * kPi / 180;
+    const double torque = inertia * ddq * w2 * w2 + k * q + t0;  // N·m about the pivot
+    EXPECT_NEAR(slow.samples[i].force, torque / (lever * 1e-3),
+                1e-9 * std::abs(torque) / (lever * 1e-3));
+    EXPECT_NEAR(slow.samples[i].torque, torque * dq, 1e-12);
+  }
+  // The least torsion rate that keeps contact at 1.2 × the jump speed: (I h π²/(2β²) ω² − T₀)/h.
+  const double w3 = 1.2 * w;
+  EXPECT_NEAR(follower_dynamics(motion, 1.2 * rpm, 10, load).min_spring_rate,
+              (inertia * h * kPi * kPi / (2 * beta * beta) * w3 * w3 - t0) / h, 1e-9);
+  motion[100].lever = 0;  // the cam cannot push the arm there
+  EXPECT_THROW(follower_dynamics(motion, rpm, 10, load), InputError);
+}
+
 // p = 2F/(π b L), b = √(2F/(πL) · (m₁ + m₂)/B), B = ½(1/R₁ + 1/R₂), m = (1 − ν²)/E (Norton's
 // half-width form; steel on steel).
 TEST(FollowerDynamics, HertzLineContactIsNortonsHalfWidthForm) {

@@ -253,6 +253,36 @@ TEST(OscillatingFlatFace, PressureAngleAndFaceContact) {
   }
 }
 
+// The contact force's lever about the pivot, against power balance: the work the cam does turning
+// by dθ, F·(X × n)·σ dθ (the moment of the force about the cam centre, X the contact point, n the
+// push direction), is the work on the arm, F·lever·dq (q the swing in rad).
+TEST(OscillatingFollower, ArmLeverBalancesTheCamsPower) {
+  for (int side : {1, -1})
+    for (Rotation rotation : {Rotation::CounterClockwise, Rotation::Clockwise})
+      for (bool roller : {true, false}) {
+        const Follower f =
+            roller ? oscillating_roller(10, 110, 80, side) : oscillating_face(130, 8, side);
+        const PlateCam cam(swing_program(10), f, roller ? 40 : 55, rotation);
+        for (int i = 0; i < 72; ++i) {
+          const double theta = 2 * pi * (i + 0.5) / 72;
+          const CamSample s = cam.sample(theta);
+          Vector2d x[1], c[1];
+          cam.contour(theta, 0, x);
+          cam.pitch(theta, 0, c);
+          // The push: from the contact to the roller centre; for a face, along its normal, which is
+          // the direction of the face's foot point (the flat follower's pitch point) from the
+          // centre.
+          const Vector2d push =
+              roller ? Vector2d((c[0] - x[0]).normalized()) : Vector2d(c[0].normalized());
+          EXPECT_NEAR(s.arm_lever * s.v * pi / 180,
+                      sense(rotation) * x[0].x() * push.y() - sense(rotation) * x[0].y() * push.x(),
+                      1e-9)
+              << side << " " << roller << " " << theta;
+          EXPECT_GT(s.arm_lever, 0.0);
+        }
+      }
+}
+
 TEST(OscillatingFollower, GeometryThatCannotWorkIsRefusedNamingTheField) {
   const auto message = [](auto&& make) {
     try {

@@ -200,8 +200,8 @@ TEST(CamProject, PolynomialConstraintsSetTheirOrder) {
 }
 
 // An oscillating follower's arm is read in the file's length unit; its lifts (and endpoint
-// derivatives) are the arm's swing in degrees, never scaled. A swing the arm cannot make, and
-// dynamics (not modelled for an arm), are refused naming the file and line.
+// derivatives) are the arm's swing in degrees, never scaled; its dynamics are an inertia and a
+// torsion spring. A swing the arm cannot make is refused naming the file and line.
 TEST(CamProject, OscillatingFollowersReadTheArmInLengthsAndTheSwingInDegrees) {
   const std::string arm =
       "follower=\"oscillating-roller\" units=\"inch\" base-radius=\"2\" roller-radius=\"0.5\" "
@@ -227,10 +227,23 @@ TEST(CamProject, OscillatingFollowersReadTheArmInLengthsAndTheSwingInDegrees) {
               testing::AllOf(
                   testing::StartsWith("cam.xml:2: <cam>: plate cam: the arm cannot swing the lift"),
                   testing::HasSubstr("swings it 179°")));
-  EXPECT_THAT(
-      error_of("<polarform version=\"1\">\n<cam " + arm + ">\n" + swing +
-               "</cam>\n<dynamics mass=\"1\"/>\n</polarform>\n"),
-      testing::StartsWith("cam.xml:6: <dynamics>: <dynamics> needs a translating follower"));
+  // The arm's dynamics: inertia and torsion spring, no lengths to scale; a mass is not the arm's.
+  const std::string with_dynamics =
+      "<polarform version=\"1\">\n<cam " + arm + ">\n" + swing +
+      "</cam>\n<dynamics inertia=\"0.02\" torsion-rate=\"40\" preload-torque=\"8\" "
+      "torsion-damping=\"0.1\" contact-width=\"0.5\"/>\n</polarform>\n";
+  const CamProject loaded = parse_cam_project(with_dynamics, "cam.xml", warnings);
+  ASSERT_TRUE(loaded.load);
+  EXPECT_TRUE(loaded.load->arm);
+  EXPECT_DOUBLE_EQ(loaded.load->inertia, 0.02);
+  EXPECT_DOUBLE_EQ(loaded.load->torsion_rate, 40);
+  EXPECT_DOUBLE_EQ(loaded.load->preload_torque, 8);
+  EXPECT_DOUBLE_EQ(loaded.load->torsion_damping, 0.1);
+  EXPECT_DOUBLE_EQ(loaded.load->contact_width, 12.7);
+  EXPECT_EQ(parse_cam_project(cam_project_xml(loaded), "saved.xml", warnings), loaded);
+  EXPECT_THAT(error_of("<polarform version=\"1\">\n<cam " + arm + ">\n" + swing +
+                       "</cam>\n<dynamics mass=\"1\"/>\n</polarform>\n"),
+              testing::StartsWith("cam.xml:6: <dynamics> attribute 'inertia': expected a number"));
 }
 
 TEST(CamProject, BrokenFilesGiveSpecificErrors) {
