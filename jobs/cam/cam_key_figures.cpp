@@ -77,6 +77,26 @@ std::vector<KeyFigure> cam_design_inputs(const CamDesignStage& design) {
   return out;
 }
 
+std::vector<KeyFigure> cam_dynamics_figures(const FollowerDynamics& dyn, const FollowerLoad& load) {
+  std::vector<KeyFigure> out;
+  std::string force =
+      number_text(dyn.least_force.force) + " N at θ = " + degrees_text(dyn.least_force.theta);
+  force += dyn.jumps ? ": the follower JUMPS" : "";
+  force +=
+      dyn.jump_rpm ? "; it jumps from " + number_text(*dyn.jump_rpm) + " rpm" : "; it never jumps";
+  out.push_back({"min contact force", force});
+  out.push_back(
+      {load.arm ? "least torsion rate for contact" : "least spring rate for contact",
+       number_text(dyn.min_spring_rate) + (load.arm ? " N·m/rad" : " N/mm") + " (same preload)"});
+  out.push_back({"max camshaft torque", number_text(dyn.largest_torque.torque) + " N·m at θ = " +
+                                            degrees_text(dyn.largest_torque.theta)});
+  if (dyn.largest_stress.contact_stress > 0)
+    out.push_back(
+        {"max contact stress", number_text(dyn.largest_stress.contact_stress) +
+                                   " MPa at θ = " + degrees_text(dyn.largest_stress.theta)});
+  return out;
+}
+
 std::vector<KeyFigure> cam_key_results(const CamDesignStage& design,
                                        const CamAnalysisStage& analysis,
                                        const CamConversionStage* conversion) {
@@ -116,20 +136,9 @@ std::vector<KeyFigure> cam_key_results(const CamDesignStage& design,
                          (is_oscillating(cam.follower.kind) ? " along the face from the pivot"
                                                             : " from the follower axis")});
   }
-  if (const auto& dyn = analysis.dynamics) {
-    std::string force =
-        number_text(dyn->least_force.force) + " N at θ = " + degrees_text(dyn->least_force.theta);
-    force += dyn->jumps ? ": the follower JUMPS" : "";
-    force += dyn->jump_rpm ? "; it jumps from " + number_text(*dyn->jump_rpm) + " rpm"
-                           : "; it never jumps";
-    out.push_back({"min contact force", force});
-    out.push_back({"max camshaft torque", number_text(dyn->largest_torque.torque) + " N·m at θ = " +
-                                              degrees_text(dyn->largest_torque.theta)});
-    if (dyn->largest_stress.contact_stress > 0)
-      out.push_back(
-          {"max contact stress", number_text(dyn->largest_stress.contact_stress) +
-                                     " MPa at θ = " + degrees_text(dyn->largest_stress.theta)});
-  }
+  if (const auto& dyn = analysis.dynamics)
+    for (KeyFigure& f : cam_dynamics_figures(*dyn, *design.project.load))
+      out.push_back(std::move(f));
   if (conversion) {
     const PolarConversion& c = conversion->conversion;
     out.push_back({"NURBS profile", "degree " + std::to_string(conversion->degree()) + ", " +

@@ -20,6 +20,11 @@ struct KeyFigure {
 // The design as the project states it: one line for the cam and follower, one per segment.
 std::vector<KeyFigure> cam_design_inputs(const CamDesignStage& design);
 
+// The follower dynamics' lines: least contact force and the jump speed, the least spring (torsion)
+// rate that keeps contact, the largest camshaft torque and contact stress.
+std::vector<KeyFigure> cam_dynamics_figures(const FollowerDynamics& dynamics,
+                                            const FollowerLoad& load);
+
 // The results; the profile's lines only with a conversion.
 std::vector<KeyFigure> cam_key_results(const CamDesignStage& design,
                                        const CamAnalysisStage& analysis,

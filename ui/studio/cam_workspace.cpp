@@ -164,7 +164,7 @@ void CamWorkspace::draw_banner() {
 void CamWorkspace::draw_editor() {
   CamProject& edit = document_.edit();
   if (ImGui::CollapsingHeader("Segments", ImGuiTreeNodeFlags_DefaultOpen))
-    segment_table_.draw(edit.cam.segments, log());
+    segment_table_.draw(edit.cam.segments, log(), motion_unit_symbol(edit.cam.follower.kind));
   if (ImGui::CollapsingHeader("Follower and cam", ImGuiTreeNodeFlags_DefaultOpen)) {
     settings_panel_.draw(edit.cam, view_, log());
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 9);
@@ -202,12 +202,30 @@ void CamWorkspace::draw_editor() {
     if (design_stale_) ImGui::TextDisabled("(last valid design)");
     draw_cam_summary(*design_, *analysis_, view_);
   }
+  if (ImGui::CollapsingHeader("Dynamics")) {
+    if (edit.cam.type == CamType::Plate) draw_dynamics_settings(edit.load, edit.cam.follower.kind);
+    if (design_ && analysis_) draw_dynamics_summary(*design_, *analysis_);
+  }
   ImGui::TextDisabled("recomputed in %.2f ms", compute_ms_);
 }
 
+// The motion (SVAJ) plots, and beside them in a tab the dynamics' when the project has them.
 void CamWorkspace::draw_plots() {
   std::vector<SegmentSpec>& segments = document_.edit().cam.segments;
-  svaj_.draw(*design_, *analysis_, revision_, view_, segments, ImGui::GetContentRegionAvail());
+  if (!analysis_->dynamics) {
+    svaj_.draw(*design_, *analysis_, revision_, view_, segments, ImGui::GetContentRegionAvail());
+    return;
+  }
+  if (!ImGui::BeginTabBar("plots")) return;
+  if (ImGui::BeginTabItem("Motion")) {
+    svaj_.draw(*design_, *analysis_, revision_, view_, segments, ImGui::GetContentRegionAvail());
+    ImGui::EndTabItem();
+  }
+  if (ImGui::BeginTabItem("Dynamics")) {
+    dynamics_.draw(*design_, *analysis_, revision_, ImGui::GetContentRegionAvail());
+    ImGui::EndTabItem();
+  }
+  ImGui::EndTabBar();
 }
 
 void CamWorkspace::draw_profile_and_conversion() {

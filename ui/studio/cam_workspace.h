@@ -14,6 +14,7 @@
 #include "ui/studio/cam_settings_panel.h"
 #include "ui/studio/cam_view_settings.h"
 #include "ui/studio/conversion_panel.h"
+#include "ui/studio/dynamics_panel.h"
 #include "ui/studio/profile_view.h"
 #include "ui/studio/project_document.h"
 #include "ui/studio/segment_table.h"
@@ -82,6 +83,7 @@ class CamWorkspace : public Workspace {
   CamSettingsPanel settings_panel_;
   ConversionPanel conversion_panel_;
   SvajPanel svaj_;
+  DynamicsPlots dynamics_;
   ProfileView profile_;
   CamViewSettings view_;
   double bench_boundary_ = 0.0;

@@ -43,19 +43,23 @@ int index_of(const std::array<Enum, N>& values, Enum v) {
   return 0;
 }
 
-bool endpoint_inputs(const char* id, EndpointDerivatives& e, int order) {
+// `unit`: of s, "mm" or "°" (an oscillating follower's swing).
+bool endpoint_inputs(const char* id, EndpointDerivatives& e, int order, const std::string& unit) {
   bool changed = false;
   ImGui::PushID(id);
-  if (order >= 1) changed |= input_number("velocity [mm/rad]", e.velocity, 1.0);
-  if (order >= 2) changed |= input_number("acceleration [mm/rad²]", e.acceleration, 1.0);
-  if (order >= 3) changed |= input_number("jerk [mm/rad³]", e.jerk, 1.0);
+  if (order >= 1) changed |= input_number(("velocity [" + unit + "/rad]").c_str(), e.velocity, 1.0);
+  if (order >= 2)
+    changed |= input_number(("acceleration [" + unit + "/rad²]").c_str(), e.acceleration, 1.0);
+  if (order >= 3) changed |= input_number(("jerk [" + unit + "/rad³]").c_str(), e.jerk, 1.0);
   ImGui::PopID();
   return changed;
 }
 
 }  // namespace
 
-bool SegmentTable::draw(std::vector<SegmentSpec>& segments, MessageLog& log) {
+bool SegmentTable::draw(std::vector<SegmentSpec>& segments, MessageLog& log,
+                        std::string_view unit) {
+  unit_ = unit;
   bool changed = false;
   if (segments.empty()) {
     ImGui::TextDisabled("No segments.");
@@ -70,7 +74,8 @@ bool SegmentTable::draw(std::vector<SegmentSpec>& segments, MessageLog& log) {
     ImGui::TableSetupColumn("law", ImGuiTableColumnFlags_WidthStretch, 1.6f);
     ImGui::TableSetupColumn("start [°]", ImGuiTableColumnFlags_WidthStretch, 1.0f);
     ImGui::TableSetupColumn("end [°]", ImGuiTableColumnFlags_WidthStretch, 1.0f);
-    ImGui::TableSetupColumn("lift [mm]", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+    ImGui::TableSetupColumn(("lift [" + unit_ + "]").c_str(), ImGuiTableColumnFlags_WidthStretch,
+                            1.0f);
     ImGui::TableHeadersRow();
     for (int i = 0; i < static_cast<int>(segments.size()); ++i) changed |= draw_row(segments, i);
     ImGui::EndTable();
@@ -225,10 +230,10 @@ bool SegmentTable::draw_details(SegmentSpec& s) {
   if (s.constrained_order > 0 && ImGui::BeginTable("ends", 2, ImGuiTableFlags_SizingStretchSame)) {
     ImGui::TableNextColumn();
     ImGui::TextUnformatted("at start");
-    changed |= endpoint_inputs("start", s.at_start, s.constrained_order);
+    changed |= endpoint_inputs("start", s.at_start, s.constrained_order, unit_);
     ImGui::TableNextColumn();
     ImGui::TextUnformatted("at end");
-    changed |= endpoint_inputs("end", s.at_end, s.constrained_order);
+    changed |= endpoint_inputs("end", s.at_end, s.constrained_order, unit_);
     ImGui::EndTable();
   }
   if (s.law == MotionLaw::BSpline) {

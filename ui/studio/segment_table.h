@@ -5,6 +5,8 @@
 // that cannot be made goes to the log.
 #pragma once
 
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "designers/cam/motion_segment.h"
@@ -14,7 +16,8 @@ namespace polarform::studio {
 
 class SegmentTable {
  public:
-  bool draw(std::vector<SegmentSpec>& segments, MessageLog& log);
+  // `unit`: of the lifts and endpoint derivatives, "mm" or "°" (an oscillating follower's swing).
+  bool draw(std::vector<SegmentSpec>& segments, MessageLog& log, std::string_view unit = "mm");
   int selected() const { return selected_; }
   void select(int index) { selected_ = index; }
 
@@ -24,6 +27,7 @@ class SegmentTable {
   bool draw_details(SegmentSpec& segment);
 
   int selected_ = 0;
+  std::string unit_ = "mm";
 };
 
 }  // namespace polarform::studio
