@@ -80,10 +80,15 @@ void SccaLaw::derivatives(double x, int k, double* out) const {
   for (int i = 0; i <= k; ++i) out[i] = at[i] * scale_;
 }
 
+// A zone thinner than kThinZone (a fraction meant as 0, e.g. fitted) adds no join of its own: the
+// law's value there differs from its neighbours' by less than the zone's width.
 std::vector<double> SccaLaw::joins() const {
+  constexpr double kThinZone = 1e-9;
   std::vector<double> joins;
   for (const Zone& z : zones_)
-    if (z.x0 > 0.0) joins.push_back(z.x0);
+    if (z.x0 > kThinZone && z.x0 < 1 - kThinZone &&
+        (joins.empty() || z.x0 - joins.back() > kThinZone))
+      joins.push_back(z.x0);
   return joins;
 }
 

@@ -64,6 +64,9 @@ App::App(StudioOptions options)
   }
   window_ =
       std::make_unique<PlatformWindow>(window_config(options_, state_, persist_, state_file_));
+  context_.open_as_template = [this](const std::filesystem::path& file) {
+    open_document(file, true);
+  };
   workspaces_ = make_workspaces(context_);
   active_ = persist_ ? state_.workspace : WorkspaceKind::cam;
 

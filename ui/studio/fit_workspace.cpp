@@ -10,7 +10,10 @@
 
 #include "export/atomic_file.h"
 #include "jobs/fit/fit_outputs.h"
+#include "jobs/project/cam_project.h"
 #include "jobs/report/report_lines.h"
+#include "jobs/scan_cam/scan_cam_outputs.h"
+#include "jobs/scan_cam/scan_cam_project.h"
 #include "src/number_text.h"
 #include "ui/studio/colors.h"
 #include "ui/studio/guarded.h"
@@ -111,6 +114,7 @@ void FitWorkspace::update() {
     if (outcome->value) {
       cloud_ = std::make_shared<const LoadedCloud>(std::move(*outcome->value));
       fit_.reset();
+      cam_scan_.reset();
       fit_error_.clear();
       const FitInput& in = cloud_->input;
       log().info("Read " + std::to_string(in.points.cols()) + " points from " +
@@ -129,6 +133,7 @@ void FitWorkspace::update() {
     }
     loading_.clear();
   }
+  cam_scan_.update(log());
   if (auto outcome = fit_task_.poll()) {
     fit_seconds_ = outcome->seconds;
     if (outcome->value) {
@@ -274,6 +279,25 @@ void FitWorkspace::draw_controls() {
     ImGui::TextWrapped("%s", fit_error_.c_str());
     ImGui::PopStyleColor();
   }
+  if (!planar_profile()) return;
+  section("Cam scan (polarform scan-cam)");
+  cam_scan_.draw_controls(cloud_->input.file);
+  const ScanCamJobResult* scan = cam_scan_.result();
+  ImGui::BeginDisabled(!scan || !scan->design);
+  if (ImGui::Button("Open the design in the Cam workspace", ImVec2(-FLT_MIN, 0)))
+    open_recovered_design();
+  ImGui::EndDisabled();
+}
+
+// The recovered design as `--write-project` writes it, saved to a file in the system's temporary
+// folder and opened from there as a new, untitled cam project (Save asks where it goes).
+void FitWorkspace::open_recovered_design() {
+  guarded(log(), "Open the recovered design", [&] {
+    const std::filesystem::path file = std::filesystem::temp_directory_path() /
+                                       (cloud_->input.file.stem().string() + "_design.xml");
+    write_file_atomically(file, cam_project_xml(recovered_cam_project(*cam_scan_.result())));
+    if (context_.open_as_template) context_.open_as_template(file);
+  });
 }
 
 // The plane of a profile, or the local frame of a surface (Bae 2002, §4.3): the fit's once there
@@ -362,6 +386,23 @@ void FitWorkspace::draw_view() {
     ImGui::TextDisabled(load_task_.busy() ? "Reading…" : "No point cloud.");
     return;
   }
+  if (!planar_profile() || (!cam_scan_.result() && !cam_scan_.busy())) {
+    draw_scene();
+    return;
+  }
+  if (!ImGui::BeginTabBar("fit views")) return;
+  if (ImGui::BeginTabItem("Cloud and fit")) {
+    draw_scene();
+    ImGui::EndTabItem();
+  }
+  if (ImGui::BeginTabItem("Cam motion")) {
+    cam_scan_.draw_result(ImGui::GetContentRegionAvail());
+    ImGui::EndTabItem();
+  }
+  ImGui::EndTabBar();
+}
+
+void FitWorkspace::draw_scene() {
   ImGui::Checkbox("points", &scene_.visible(SceneLayer::cloud));
   ImGui::SameLine();
   ImGui::Checkbox("surface", &scene_.visible(SceneLayer::surface));
@@ -399,17 +440,41 @@ std::vector<ExportChoice> FitWorkspace::export_choices() const {
   const bool ready = fit_.has_value();
   const std::string what = fit_ && fit_->result.profile() ? "Curve" : "Surface";
   const std::string needs = ready ? "" : "fit first";
-  return {{{"all", "Export all outputs into the folder", "", stem + "_outputs"},
-           "All outputs to a folder…",
-           ready,
-           "What `polarform fit` writes: the fitted surface or curve as IGES, STEP and X3D, "
-           "deviation.ply, preview.svg, report.html and report.json"},
-          {{"iges", "Export IGES", ".igs", stem + ".igs"}, what + " as IGES…", ready, needs, true},
-          {{"step", "Export STEP", ".stp", stem + ".stp"}, what + " as STEP…", ready, needs},
-          {{"x3d", "Export X3D", ".x3d", stem + ".x3d"}, what + " as X3D…", ready, needs}};
+  return {
+      {{"all", "Export all outputs into the folder", "", stem + "_outputs"},
+       "All outputs to a folder…",
+       ready,
+       "What `polarform fit` writes: the fitted surface or curve as IGES, STEP and X3D, "
+       "deviation.ply, preview.svg, report.html and report.json"},
+      {{"iges", "Export IGES", ".igs", stem + ".igs"}, what + " as IGES…", ready, needs, true},
+      {{"step", "Export STEP", ".stp", stem + ".stp"}, what + " as STEP…", ready, needs},
+      {{"x3d", "Export X3D", ".x3d", stem + ".x3d"}, what + " as X3D…", ready, needs},
+      {{"scan-cam", "Export the scan-cam outputs into the folder", "", stem + "_scan_cam"},
+       "Cam scan outputs to a folder…",
+       planar_profile(),
+       "What `polarform scan-cam` writes for this profile with the follower chosen under Cam scan "
+       "(the job runs first if it has not)",
+       true},
+      {{"design", "Export the recovered cam design", ".xml", stem + "_design.xml"},
+       "Recovered cam design as a project…",
+       planar_profile(),
+       "The project `polarform scan-cam --write-project` writes"}};
 }
 
 void FitWorkspace::export_to(const ExportRequest& request, const std::filesystem::path& file) {
+  if (request.tag == "scan-cam" || request.tag == "design") {
+    guarded(log(), "Export " + file.filename().string(), [&] {
+      const ScanCamJobResult& r = cam_scan_.ensure(cloud_->input.file);
+      if (request.tag == "design") {
+        write_file_atomically(file, cam_project_xml(recovered_cam_project(r)));
+        log().info("Exported the recovered design to " + file.string());
+        return;
+      }
+      const auto files = write_scan_cam_outputs(r, file);
+      log().info("Wrote " + std::to_string(files.size()) + " files into " + file.string());
+    });
+    return;
+  }
   if (!fit_) return;
   guarded(log(), "Export " + file.filename().string(), [&] {
     if (request.tag == "all") {
@@ -455,6 +520,9 @@ std::string FitWorkspace::numbers() const {
   out << "fitted=" << (fit_ ? 1 : 0) << "\n";
   // The fields of report.json for the fit shown, from the job's own report builder.
   if (fit_) out << report_lines(fit_report_fields(fit_->result));
+  // The scan-cam job's report.json fields, when it ran on this profile.
+  if (const ScanCamJobResult* scan = cam_scan_.result())
+    out << report_lines(scan_cam_report_json(*scan, {}), "scan_cam.");
   return out.str();
 }
 

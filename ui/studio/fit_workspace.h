@@ -13,6 +13,7 @@
 
 #include "jobs/fit/fit_job.h"
 #include "ui/studio/background_task.h"
+#include "ui/studio/cam_scan_panel.h"
 #include "ui/studio/fit_options_panel.h"
 #include "ui/studio/scene_view.h"
 #include "ui/studio/undo_history.h"
@@ -42,7 +43,7 @@ class FitWorkspace : public Workspace {
 
   WorkspaceKind kind() const override { return WorkspaceKind::fit; }
   void update() override;
-  bool busy() const override { return load_task_.busy() || fit_task_.busy(); }
+  bool busy() const override { return load_task_.busy() || fit_task_.busy() || cam_scan_.busy(); }
   void draw() override;
 
   bool open(const std::filesystem::path& file, bool as_template) override;
@@ -76,6 +77,9 @@ class FitWorkspace : public Workspace {
   void draw_frame();
   void draw_report();
   void draw_view();
+  void draw_scene();
+  bool planar_profile() const { return cloud_ && cloud_->preview && cloud_->preview->profile; }
+  void open_recovered_design();
   void show_cloud();
   void show_fit();
   FitJobOptions job_options() const;
@@ -93,6 +97,7 @@ class FitWorkspace : public Workspace {
   bool fit_on_open_ = true;
   bool show_deviation_ = true;
   SceneView scene_;
+  CamScanPanel cam_scan_;  // planar profiles: the scan-cam job
 };
 
 }  // namespace polarform::studio

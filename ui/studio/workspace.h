@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -40,6 +41,8 @@ struct StudioContext {
   MessageLog& log;
   std::map<std::string, float>& layout;  // persisted splitter fractions and toggles
   std::filesystem::path examples;        // examples/ with the templates
+  // Opens a file as a new, untitled document in the workspace its kind belongs to (set by the app).
+  std::function<void(const std::filesystem::path&)> open_as_template;
 };
 
 class Workspace {

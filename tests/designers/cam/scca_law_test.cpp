@@ -83,5 +83,21 @@ TEST(SccaLaw, JoinsAndBadParameters) {
   EXPECT_THROW(SccaLaw({-0.1, 0.6, 0.5}), InputError);
 }
 
+// A fraction meant as 0 but fitted as 1e-14 (a scan's recovered law) adds no joins: the law is the
+// one without that zone to rounding, and the converter sees no knot 1e-14 from another.
+TEST(SccaLaw, AFractionMeantAsZeroAddsNoJoins) {
+  const SccaLaw fitted({0.5806456004059699, 1.1213252548714081e-14, 0.4193543995940189});
+  const SccaLaw exact({0.5806456004059699, 0.0, 1 - 0.5806456004059699});
+  ASSERT_EQ(fitted.joins().size(), exact.joins().size());
+  for (std::size_t k = 0; k < exact.joins().size(); ++k)
+    EXPECT_NEAR(fitted.joins()[k], exact.joins()[k], 1e-12);
+  for (int i = 0; i <= 100; ++i) {
+    double a[5], b[5];
+    fitted.derivatives(i / 100.0, 2, a);
+    exact.derivatives(i / 100.0, 2, b);
+    for (int k = 0; k <= 2; ++k) EXPECT_NEAR(a[k], b[k], 1e-9);
+  }
+}
+
 }  // namespace
 }  // namespace polarform
