@@ -8,9 +8,10 @@ namespace polarform {
 
 namespace {
 
-constexpr MotionLaw kStandardLaws[] = {MotionLaw::SimpleHarmonic,    MotionLaw::Cycloidal,
-                                       MotionLaw::ModifiedTrapezoid, MotionLaw::ModifiedSine,
-                                       MotionLaw::Polynomial345,     MotionLaw::Polynomial4567};
+constexpr MotionLaw kStandardLaws[] = {MotionLaw::SimpleHarmonic,       MotionLaw::Cycloidal,
+                                       MotionLaw::ModifiedTrapezoid,    MotionLaw::ModifiedSine,
+                                       MotionLaw::Polynomial345,        MotionLaw::Polynomial4567,
+                                       MotionLaw::ConstantAcceleration, MotionLaw::Cubic};
 
 // Starting fractions of the SCCA search: the family's named members and its centre.
 constexpr SccaParameters kSccaStarts[] = {{0.25, 0.5, 0.25},
@@ -68,7 +69,8 @@ IdentifiedMotion identify_law(const FollowerSamples& samples, const MotionPiece&
   const bool member = m.law().shape.law == MotionLaw::SimpleHarmonic ||
                       m.law().shape.law == MotionLaw::Cycloidal ||
                       m.law().shape.law == MotionLaw::ModifiedTrapezoid ||
-                      m.law().shape.law == MotionLaw::ModifiedSine;
+                      m.law().shape.law == MotionLaw::ModifiedSine ||
+                      m.law().shape.law == MotionLaw::ConstantAcceleration;
   for (std::size_t i = 0; i < m.candidates.size(); ++i)
     if (i != m.chosen && !(member && m.candidates[i].shape.law == MotionLaw::Scca) &&
         m.candidates[i].rss - m.law().rss < kIndistinguishableChi2 * sigma2)

@@ -1,12 +1,15 @@
 // Law identification of one rise or return of a recovered follower motion: every law polarform
-// knows with a fixed shape — the six standard laws of motion_law.h — and the SCCA family with
+// knows with a fixed shape and a mirror-symmetric rise — the six standard laws of motion_law.h,
+// constant acceleration and the cubic (double harmonic, whose rise and return differ, is not a
+// candidate yet) — and the SCCA family with
 // free fractions (b, c, d) (scca_law.h) is fitted with free boundary angles, start level and lift
 // (law_fit.h) to the samples of the motion's window, and the law of least Bayesian information
 // criterion BIC = RSS/σ² + k·ln n is chosen (Schwarz 1978; σ known: the scan's noise), so that
-// SCCA, which holds four of the standard laws, wins only when its two extra parameters earn
-// their penalty. The data cannot tell the chosen law from another when the other's RSS exceeds
+// SCCA, which holds five of these laws, wins only when its two extra parameters earn their
+// penalty. The data cannot tell the chosen law from another when the other's RSS exceeds
 // it by less than 9σ² (a difference of the two fitted curves within 3σ along the residual); SCCA
-// is not listed against the standard laws it holds (harmonic, cycloidal, the modified ones).
+// is not listed against the laws it holds (harmonic, cycloidal, the modified ones, constant
+// acceleration).
 // The polynomial and B-spline laws are not candidates: with the zero endpoint derivatives of a
 // rise between dwells, the minimal Hermite polynomials are the 3-4-5 and 4-5-6-7 laws.
 #pragma once
@@ -25,7 +28,7 @@ constexpr double kIndistinguishableChi2 = 9.0;
 
 struct IdentifiedMotion {
   SegmentKind kind = SegmentKind::Rise;  // from the sign of the chosen lift
-  std::vector<LawFit> candidates;        // the six standard laws in motion_law.h order, then SCCA
+  std::vector<LawFit> candidates;        // kStandardLaws' order (law_identification.cpp), then SCCA
   std::vector<double> bic;               // per candidate
   std::size_t chosen = 0;
   std::vector<std::size_t> indistinguishable;  // candidates within the χ² margin of the chosen
