@@ -13,6 +13,7 @@
 #include "src/error.h"
 #include "src/units.h"
 #include "tests/designers/cam/cam_test_support.h"
+#include "tests/designers/cam/segment_support.h"
 #include "tests/support/designers/arm_oracle.h"
 
 namespace polarform {
@@ -20,17 +21,8 @@ namespace {
 
 using Eigen::Vector2d;
 using test::ArmOracle;
+using test::segment;
 constexpr double pi = std::numbers::pi;
-
-SegmentSpec segment(SegmentKind kind, double from_deg, double to_deg, double lift, MotionLaw law) {
-  SegmentSpec s;
-  s.kind = kind;
-  s.start = from_deg * kRadiansPerDegree;
-  s.end = to_deg * kRadiansPerDegree;
-  s.lift = lift;
-  s.law = law;
-  return s;
-}
 
 // Dwell, rise of `lift` over 80°–190° (cycloidal), dwell, return over 250°–360° (4-5-6-7).
 CamProgram swing_program(double lift) {
