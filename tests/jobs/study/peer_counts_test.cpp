@@ -15,8 +15,8 @@
 #include "designers/convert/polar_conversion.h"
 #include "jobs/cam/cam_job.h"
 #include "jobs/vessel/vessel_job.h"
+#include "tests/support/designers/contour_distance.h"
 #include "tests/support/jobs/cam_job_support.h"
-#include "tests/support/jobs/contour_distance.h"
 #include "tests/support/jobs/vessel_job_support.h"
 
 #if POLARFORM_HAVE_OCCT
