@@ -6,6 +6,7 @@
 #include "designers/convert/arc_layout.h"
 #include "designers/convert/conversion_error.h"
 #include "designers/convert/function_spline.h"
+#include "designers/convert/measured_knot_removal.h"
 #include "src/error.h"
 #include "src/number_text.h"
 #include "src/nurbs/symbolic_product.h"
@@ -71,6 +72,22 @@ PolarConversion convert_polar_function(const PolarFunction& R, const ConversionO
     for (auto j = failing.rbegin(); j != failing.rend(); ++j)
       breaks.insert(breaks.begin() + *j + 1, 0.5 * (breaks[*j] + breaks[*j + 1]));
   }
+
+  out.steps.push_back({"product", out.curve.size(), out.max_radial_error});
+  // Knot removal within the budget the measured error left; kept only if the whole curve, measured
+  // again, still meets the tolerance.
+  const PolarConversion product_only = out;
+  const MeasuredRemoval removal =
+      options.compaction == Compaction::none
+          ? MeasuredRemoval{out.curve, 0}
+          : remove_knots_within(
+                out.curve, R, options.tolerance,
+                options.compaction == Compaction::full ? std::vector<double>{} : R.breakpoints);
+  if (removal.removed > 0) {
+    out.curve = removal.curve;
+    if (!measure_arcs(out.curve, R, breaks, out).empty()) out = product_only;
+  }
+  out.steps.push_back({"knot removal", out.curve.size(), out.max_radial_error});
 
   out.synchronization_error = 0.0;
   for (std::size_t j = 0; j + 1 < breaks.size(); ++j)

@@ -1,9 +1,11 @@
 // The polar-function converter (Bae 2002, §5.1, improved): R(θ) → F(u) as a B-spline → a base
 // circle of unequal quasi-uniform quartic (or RQB) arcs chosen so that the MEASURED radial error
 // of C(u) = F(u)·B̃(u) meets the tolerance → one NURBS curve of degree deg F + 4 (or + 2), with
-// the measurements that prove it.
+// the measurements that prove it; then the knots the remaining error budget allows are removed
+// (NURBS Book A5.8, each removal measured).
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "designers/convert/polar_function.h"
@@ -17,12 +19,18 @@ namespace polarform {
 // would refine without end.
 inline constexpr double kMinTolerance = 1e-9;
 
+// Which knots of the product C = F·B the conversion may remove within the tolerance: none (C is
+// exactly F·B, e.g. when F and B are used apart, as for a cylindrical cam's track); all but those
+// at R's breakpoints (which stay exact arc junctions, e.g. a vessel head's apex on the axis); all.
+enum class Compaction { none, between_breakpoints, full };
+
 struct ConversionOptions {
   double tolerance = 1e-3;  // mm: bound on the measured max radial error of the result
   ArcKind base = ArcKind::quartic;
   AlphaRule alpha = AlphaRule::minimax;
   // Share of the tolerance for representing R as a B-spline (the rest is the arcs' budget).
   double function_share = 0.9;
+  Compaction compaction = Compaction::between_breakpoints;
 
   bool operator==(const ConversionOptions&) const = default;
 };
@@ -30,6 +38,15 @@ struct ConversionOptions {
 struct ArcSummary {
   double start = 0.0, sweep = 0.0;  // rad
   double max_radial_error = 0.0;    // mm, measured on the final curve
+};
+
+// The control points after each step of the conversion, in order ("product", "knot removal").
+struct ConversionStep {
+  std::string name;
+  int control_points = 0;
+  double max_radial_error = 0.0;  // mm, measured after the step
+
+  bool operator==(const ConversionStep&) const = default;
 };
 
 struct PolarConversion {
@@ -47,6 +64,7 @@ struct PolarConversion {
   double function_error = 0.0;
   bool function_exact = false;
   double synchronization_error = 0.0;
+  std::vector<ConversionStep> steps;
 };
 
 PolarConversion convert_polar_function(const PolarFunction& R, const ConversionOptions& options);

@@ -38,6 +38,8 @@ StudyMethodResult base_method(const PolarFunction& R, double tol, ArcKind kind) 
   ConversionOptions options;
   options.tolerance = tol;
   options.base = kind;
+  // The base arcs compared as they build C = F·B (the product step, before any knot removal).
+  options.compaction = Compaction::none;
   const PolarConversion c = convert_polar_function(R, options);
   return {static_cast<int>(c.arcs.size()), 0, c.curve.degree(), c.curve.size(), c.max_radial_error};
 }

@@ -300,13 +300,20 @@ CamConversionStage convert_cam(const CamDesignStage& design, const CamJobOptions
   CamConversionStage c;
   if (const auto* plate = std::get_if<PlateCam>(&design.cam)) {
     c.profile_function = cam_polar_function(*plate);
-    c.conversion = convert_polar_function(c.profile_function, project.conversion);
+    // The profile is exported as converted: every knot the tolerance allows goes, including one
+    // copy at each C0 arc junction, so that readers see one smooth curve.
+    ConversionOptions conversion = project.conversion;
+    conversion.compaction = Compaction::full;
+    c.conversion = convert_polar_function(c.profile_function, conversion);
     c.profile = plate_profile(project, c, options, c.warnings);
   } else {
     const auto& barrel = std::get<BarrelCam>(design.cam);
     const double offset = track_height_offset(project.cam);
     c.profile_function = offset_track_height(barrel, offset);
-    c.conversion = convert_polar_function(c.profile_function, project.conversion);
+    // The track is built from F and the base circle apart (track_curve): C stays F·B.
+    ConversionOptions conversion = project.conversion;
+    conversion.compaction = Compaction::none;
+    c.conversion = convert_polar_function(c.profile_function, conversion);
     c.profile = cylindrical_track(project, barrel, c, offset);
   }
   c.error = measure_error(c.conversion, c.profile_function, options.error_samples);

@@ -22,7 +22,13 @@ void add_conversion_fields(nlohmann::ordered_json& j, const PolarConversion& c, 
   j["alpha"] = c.base.alpha_rule() == AlphaRule::minimax ? "minimax" : "printed";
   j["error_budget"] = {{"function_mm", c.function_error},
                        {"function_exact", c.function_exact},
-                       {"synchronization_mm", c.synchronization_error}};
+                       {"synchronization_mm", c.synchronization_error},
+                       {"remaining_mm", c.tolerance - c.max_radial_error}};
+  j["control_points_steps"] = nlohmann::ordered_json::array();
+  for (const ConversionStep& s : c.steps)
+    j["control_points_steps"].push_back({{"step", s.name},
+                                         {"control_points", s.control_points},
+                                         {"max_radial_error_mm", s.max_radial_error}});
   j["arc_list"] = nlohmann::ordered_json::array();
   for (const ArcSummary& a : c.arcs)
     j["arc_list"].push_back({{"start_deg", degrees_in_turn(a.start)},

@@ -1,5 +1,6 @@
 // The converter's figures in a job's report.json — tolerance, arcs, degree, control points,
-// measured errors, G1 check, base, error budget and the arc list — under the field names that
+// measured errors, G1 check, base, error budget, the control points after each conversion step
+// and the arc list — under the field names that
 // docs/file-formats.md fixes for the cam and vessel reports alike.
 #pragma once
 
