@@ -56,7 +56,7 @@ std::vector<BadProject> bad_projects() {
       {"misspelt_units", edited("type=\"plate\"", "type=\"plate\" unit=\"inch\""),
        ":3: unknown attribute 'unit' on <cam> (known here: "},
       {"unknown_element", edited("</cam>", "<follower-arm length=\"100\"/></cam>"),
-       "unknown element <follower-arm> in <cam> (known here: segment)"},
+       "unknown element <follower-arm> in <cam> (known here: conjugate, segment)"},
       {"no_segments",
        "<polarform version=\"1\"><cam follower=\"knife-edge\" base-radius=\"40\"/>"
        "</polarform>\n",
