@@ -1,9 +1,9 @@
 // Oscillating followers end to end: the cam job's exact NURBS profile, for the bundled examples and
 // random swing-arm designs, measured against the independent arm oracle (tests/support/designers/
-// arm_oracle.h) by dense sampling — every point of a roller cam's profile at the roller radius from
-// the roller centres, a flat-faced cam's support function equal to the face's height — within the
-// tolerance; and profile.igs / profile.stp read back through Open CASCADE and measured the same
-// way.
+// arm_oracle.h) by dense sampling (envelope_deviation.h) — every point of a roller cam's profile at
+// the roller radius from the roller centres, a flat-faced cam's support function equal to the
+// face's height — within the tolerance; and profile.igs / profile.stp read back through Open
+// CASCADE and measured the same way.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -18,6 +18,7 @@
 #include "src/units.h"
 #include "tests/support/designers/arm_oracle.h"
 #include "tests/support/jobs/cam_job_support.h"
+#include "tests/support/jobs/envelope_deviation.h"
 
 #if POLARFORM_HAVE_OCCT
 #include <BRep_Tool.hxx>
@@ -49,59 +50,16 @@ ArmOracle oracle_of(const CamProject& p) {
           d.follower.kind == FollowerKind::OscillatingRoller};
 }
 
-struct Deviation {
-  double outside = 0.0;  // largest distance beyond the exact contour (into the follower), mm
-  double inside = 0.0;   // largest distance inside it (into the cam), mm
-  double worst() const { return std::max(outside, inside); }
-};
+using test::dense_points;
+using test::Deviation;
 
-// Roller: each profile point's distance to the nearest roller centre, minus Rr (nearest by a
-// window around the previous point's, refined by a ternary search on θ), and each roller centre's
-// distance to the profile points. Flat face: the profile's support function against h(θ).
+// Roller: the profile against the oracle's roller centres (envelope_deviation.h). Flat face: the
+// profile's support function against h(θ).
 Deviation deviation(const ArmOracle& o, const std::vector<Vector2d>& profile) {
+  if (o.roller)
+    return test::envelope_deviation(
+        [&](double t) { return Vector2d(o.to_cam(o.roller_centre(t), t)); }, o.rr, profile);
   Deviation dev;
-  const int n = 7200;
-  if (o.roller) {
-    std::vector<Vector2d> centres(n);
-    for (int i = 0; i < n; ++i)
-      centres[i] = o.to_cam(o.roller_centre(2 * pi * i / n), 2 * pi * i / n);
-    int near = 0;
-    for (int i = 1; i < n; ++i)
-      if ((profile[0] - centres[i]).norm() < (profile[0] - centres[near]).norm()) near = i;
-    for (const Vector2d& x : profile) {
-      const int from = near;
-      for (int k = -60; k <= 60; ++k) {
-        const int i = ((from + k) % n + n) % n;
-        if ((x - centres[i]).norm() < (x - centres[near]).norm()) near = i;
-      }
-      double lo = 2 * pi * (near - 1) / n, hi = 2 * pi * (near + 1) / n;
-      const auto distance = [&](double t) { return (x - o.to_cam(o.roller_centre(t), t)).norm(); };
-      for (int it = 0; it < 40; ++it) {  // (2/3)^40 of 1e-3 rad
-        const double a = lo + (hi - lo) / 3, b = hi - (hi - lo) / 3;
-        if (distance(a) < distance(b))
-          hi = b;
-        else
-          lo = a;
-      }
-      const double gap = distance(0.5 * (lo + hi)) - o.rr;
-      dev.outside = std::max(dev.outside, gap), dev.inside = std::max(dev.inside, -gap);
-    }
-    // The profile covers the whole contour: every 10th roller centre has a profile point at Rr
-    // (nearest by a window around the previous centre's, as both run round the cam in order).
-    const int m = static_cast<int>(profile.size()), window = m / 100 + 2;
-    int at = 0;
-    for (int i = 1; i < m; ++i)
-      if ((profile[i] - centres[0]).norm() < (profile[at] - centres[0]).norm()) at = i;
-    for (int i = 0; i < n; i += 10) {
-      const int from = at;
-      for (int k = -window; k <= window; ++k) {
-        const int j = ((from + k) % m + m) % m;
-        if ((profile[j] - centres[i]).norm() < (profile[at] - centres[i]).norm()) at = j;
-      }
-      dev.outside = std::max(dev.outside, (profile[at] - centres[i]).norm() - o.rr);
-    }
-    return dev;
-  }
   for (int i = 0; i < 1440; ++i) {
     const double theta = 2 * pi * i / 1440;
     const Vector2d normal = o.to_cam(o.face_normal(theta), theta);
@@ -111,13 +69,6 @@ Deviation deviation(const ArmOracle& o, const std::vector<Vector2d>& profile) {
     dev.outside = std::max(dev.outside, gap), dev.inside = std::max(dev.inside, -gap);
   }
   return dev;
-}
-
-std::vector<Vector2d> dense_points(const NurbsCurve2d& c, int count) {
-  std::vector<Vector2d> out;
-  const double a = c.front(), b = c.back();
-  for (int i = 0; i < count; ++i) out.push_back(c.point(a + (b - a) * i / count));
-  return out;
 }
 
 CamProject example_project(const std::string& name) {

@@ -36,6 +36,12 @@ struct ArmOracle {
     const Eigen::Vector2d p = pivot();
     return p + rotate(Eigen::Vector2d(0, rb + rr) - p, arm_turn(theta));
   }
+  // A second arm on the same pivot (conjugate cams), turned by gamma (rad, counter-clockwise) from
+  // the first and l2 long: its roller centre.
+  Eigen::Vector2d second_roller_centre(double theta, double gamma, double l2) const {
+    const Eigen::Vector2d p = pivot();
+    return p + rotate(roller_centre(theta) - p, gamma) * (l2 / l);
+  }
   // Fixed frame to cam frame at θ: turned back by σθ.
   Eigen::Vector2d to_cam(const Eigen::Vector2d& x, double theta) const {
     return rotate(x, -sigma * theta);
