@@ -19,11 +19,6 @@
 #include "tests/support/jobs/envelope_deviation.h"
 
 #if POLARFORM_HAVE_OCCT
-#include <BRep_Tool.hxx>
-#include <Geom_Curve.hxx>
-#include <IGESControl_Reader.hxx>
-#include <STEPControl_Reader.hxx>
-
 #include "tests/support/export/occt_readback.h"
 #endif
 
@@ -33,11 +28,6 @@ namespace {
 using Eigen::Vector2d;
 using namespace cam_job_test;
 constexpr double pi = std::numbers::pi;
-
-test::TranslatingOracle oracle_of(const CamDesign& d) {
-  return {make_program(d), d.base_radius, d.follower.roller_radius, d.follower.offset,
-          sense(d.rotation)};
-}
 
 // The height on the follower axis x = e of a roller of radius r resting on the curve (from above,
 // side +1) or hanging under it (side -1) at cam angle θ: the extreme over the curve's points in
@@ -72,7 +62,7 @@ TEST(ConjugateCamJob, TheRollersKeepTheirDistanceAndTouchBothCams) {
   EXPECT_EQ(r.conversion.companion->kind, CompanionKind::ConjugateContour);
   const double tol = r.project().conversion.tolerance, rr = d.follower.roller_radius;
   const double distance = d.conjugate->roller_distance;
-  const test::TranslatingOracle o = oracle_of(d);
+  const test::TranslatingOracle o = test::TranslatingOracle::of(d);
   const NurbsCurve2d& first = plate_profile(r).curve;
   const NurbsCurve2d& second = r.conversion.companion->conversion.curve;
   const test::Deviation d1 = test::envelope_deviation([&](double t) { return o.first(t); }, rr,
@@ -104,10 +94,7 @@ TEST(ConjugateCamJob, ASecondArmDrivesTheOscillatingFollowerBack) {
   p.cam.conjugate = ConjugateFollower{0.0, 60 * kRadiansPerDegree, 80};
   const CamJobResult r = run_cam_job(p);
   ASSERT_TRUE(r.conversion.companion);
-  const test::ArmOracle o{
-      make_program(p.cam),           p.cam.base_radius,         p.cam.follower.roller_radius,
-      p.cam.follower.pivot_distance, p.cam.follower.arm_length, 0.0,
-      p.cam.follower.pivot_side,     sense(p.cam.rotation),     true};
+  const test::ArmOracle o = test::ArmOracle::of(p.cam);
   const double tol = p.conversion.tolerance;
   const test::Deviation d1 =
       test::envelope_deviation([&](double t) { return Vector2d(o.to_cam(o.roller_centre(t), t)); },
@@ -159,28 +146,12 @@ TEST(ConjugateCamJob, BadGeometryIsRefusedNamingTheField) {
 TEST(ConjugateCamOcct, OpenCascadeReadsTheSecondCamWithinTheTolerance) {
   const ExampleRun& run = example("conjugate");
   const CamDesign& d = run.result.project().cam;
-  const test::TranslatingOracle o = oracle_of(d);
+  const test::TranslatingOracle o = test::TranslatingOracle::of(d);
   const auto path = [&](double t) { return o.second(t, d.conjugate->roller_distance); };
-  IGESControl_Reader iges;
-  ASSERT_EQ(iges.ReadFile((run.dir / "conjugate.igs").c_str()), IFSelect_RetDone);
-  iges.TransferRoots();
-  EXPECT_EQ(exchange_test::reader_messages(iges.WS(), true), "");
-  STEPControl_Reader step;
-  ASSERT_EQ(step.ReadFile((run.dir / "conjugate.stp").c_str()), IFSelect_RetDone);
-  step.TransferRoots();
-  EXPECT_EQ(exchange_test::reader_messages(step.WS(), true), "");
-  for (const TopoDS_Shape& shape : {iges.OneShape(), step.OneShape()}) {
-    std::vector<Vector2d> points;
-    const std::vector<TopoDS_Edge> edges = exchange_test::edges_of(shape);
-    for (const TopoDS_Edge& e : edges) {
-      double a = 0, b = 0;
-      const Handle(Geom_Curve) c = BRep_Tool::Curve(e, a, b);
-      const int n = 40000 / static_cast<int>(edges.size());
-      for (int i = 0; i < n; ++i) {
-        const gp_Pnt q = c->Value(a + (b - a) * i / n);
-        points.emplace_back(q.X(), q.Y());
-      }
-    }
+  for (const char* file : {"conjugate.igs", "conjugate.stp"}) {
+    SCOPED_TRACE(file);
+    const TopoDS_Shape shape = exchange_test::read_exchange_file(run.dir / file);
+    const std::vector<Vector2d> points = exchange_test::sampled_points(shape, 40000);
     EXPECT_LE(test::envelope_deviation(path, d.follower.roller_radius, points).worst(),
               run.result.project().conversion.tolerance);
   }

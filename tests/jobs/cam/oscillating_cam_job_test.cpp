@@ -21,8 +21,6 @@
 #include "tests/support/jobs/envelope_deviation.h"
 
 #if POLARFORM_HAVE_OCCT
-#include <BRep_Tool.hxx>
-#include <Geom_Curve.hxx>
 #include <IGESControl_Reader.hxx>
 #include <STEPControl_Reader.hxx>
 
@@ -37,18 +35,7 @@ using Eigen::Vector2d;
 using test::ArmOracle;
 constexpr double pi = std::numbers::pi;
 
-ArmOracle oracle_of(const CamProject& p) {
-  const CamDesign& d = p.cam;
-  return {make_program(d),
-          d.base_radius,
-          d.follower.roller_radius,
-          d.follower.pivot_distance,
-          d.follower.arm_length,
-          d.follower.face_offset,
-          d.follower.pivot_side,
-          sense(d.rotation),
-          d.follower.kind == FollowerKind::OscillatingRoller};
-}
+ArmOracle oracle_of(const CamProject& p) { return ArmOracle::of(p.cam); }
 
 using test::dense_points;
 using test::Deviation;
@@ -150,22 +137,6 @@ TEST(OscillatingCamJob, RandomDesignsMeetTheToleranceAgainstTheArmOracle) {
 
 #if POLARFORM_HAVE_OCCT
 
-// Every edge Open CASCADE makes of a file, sampled densely.
-std::vector<Vector2d> occt_points(const TopoDS_Shape& shape) {
-  std::vector<Vector2d> out;
-  const std::vector<TopoDS_Edge> edges = exchange_test::edges_of(shape);
-  for (const TopoDS_Edge& e : edges) {
-    double a = 0, b = 0;
-    const Handle(Geom_Curve) c = BRep_Tool::Curve(e, a, b);
-    const int n = 40000 / static_cast<int>(edges.size());
-    for (int i = 0; i < n; ++i) {
-      const gp_Pnt q = c->Value(a + (b - a) * i / n);
-      out.emplace_back(q.X(), q.Y());
-    }
-  }
-  return out;
-}
-
 TEST(OscillatingCamJob, OpenCascadeReadsProfilesWithinTheToleranceOfTheArmOracle) {
   for (const std::string name : {"oscillating_roller", "oscillating_flat_faced"}) {
     SCOPED_TRACE(name);
@@ -177,14 +148,16 @@ TEST(OscillatingCamJob, OpenCascadeReadsProfilesWithinTheToleranceOfTheArmOracle
     ASSERT_EQ(iges.ReadFile((dir / "profile.igs").c_str()), IFSelect_RetDone);
     iges.TransferRoots();
     EXPECT_EQ(exchange_test::reader_messages(iges.WS(), true), "");
-    EXPECT_LE(deviation(oracle_of(p), occt_points(iges.OneShape())).worst(),
-              p.conversion.tolerance);
+    EXPECT_LE(
+        deviation(oracle_of(p), exchange_test::sampled_points(iges.OneShape(), 40000)).worst(),
+        p.conversion.tolerance);
     STEPControl_Reader step;
     ASSERT_EQ(step.ReadFile((dir / "profile.stp").c_str()), IFSelect_RetDone);
     step.TransferRoots();
     EXPECT_EQ(exchange_test::reader_messages(step.WS(), true), "");
-    EXPECT_LE(deviation(oracle_of(p), occt_points(step.OneShape())).worst(),
-              p.conversion.tolerance);
+    EXPECT_LE(
+        deviation(oracle_of(p), exchange_test::sampled_points(step.OneShape(), 40000)).worst(),
+        p.conversion.tolerance);
   }
 }
 

@@ -24,11 +24,7 @@
 #if POLARFORM_HAVE_OCCT
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepGProp.hxx>
-#include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
-#include <Geom_Curve.hxx>
-#include <IGESControl_Reader.hxx>
-#include <STEPControl_Reader.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 
@@ -42,24 +38,13 @@ using Eigen::Vector2d;
 using namespace cam_job_test;
 constexpr double pi = std::numbers::pi;
 
-test::TranslatingOracle translating_oracle(const CamDesign& d) {
-  return {make_program(d), d.base_radius, d.follower.roller_radius, d.follower.offset,
-          sense(d.rotation)};
-}
-
-test::ArmOracle arm_oracle(const CamDesign& d) {
-  return {make_program(d),           d.base_radius,         d.follower.roller_radius,
-          d.follower.pivot_distance, d.follower.arm_length, 0.0,
-          d.follower.pivot_side,     sense(d.rotation),     true};
-}
-
 // The roller centre in the cam frame at θ, from the oracle that fits the follower.
 std::function<Vector2d(double)> centre_path(const CamDesign& d) {
   if (is_oscillating(d.follower.kind)) {
-    const test::ArmOracle o = arm_oracle(d);
+    const test::ArmOracle o = test::ArmOracle::of(d);
     return [o](double t) { return Vector2d(o.to_cam(o.roller_centre(t), t)); };
   }
-  const test::TranslatingOracle o = translating_oracle(d);
+  const test::TranslatingOracle o = test::TranslatingOracle::of(d);
   return [o](double t) { return o.first(t); };
 }
 
@@ -161,27 +146,19 @@ TEST(PlateGrooveJob, AGrooveNeedsARoller) {
 #if POLARFORM_HAVE_OCCT
 
 // The edges Open CASCADE makes of a flank file (a curve may come split at its arc junctions),
-// sampled densely and sorted by flank: inner where a point lies nearer the cam centre than the
-// roller centre nearest to it, in the files' order.
+// sampled densely and sorted by flank: inner where an edge's middle point lies nearer the cam
+// centre than the roller centre nearest to it, in the file's order.
 std::array<std::vector<Vector2d>, 2> occt_flanks(const TopoDS_Shape& shape,
                                                  const std::function<Vector2d(double)>& path) {
   std::array<std::vector<Vector2d>, 2> out;
-  const std::vector<TopoDS_Edge> edges = exchange_test::edges_of(shape);
-  for (const TopoDS_Edge& e : edges) {
-    double a = 0, b = 0;
-    const Handle(Geom_Curve) c = BRep_Tool::Curve(e, a, b);
-    const gp_Pnt mid = c->Value(0.5 * (a + b));
-    const Vector2d x(mid.X(), mid.Y());
+  for (const std::vector<Vector2d>& edge : exchange_test::sampled_edges(shape, 40000)) {
+    const Vector2d x = edge[edge.size() / 2];
     Vector2d nearest = path(0);
     for (int i = 1; i < 3600; ++i)
       if ((x - path(2 * pi * i / 3600)).norm() < (x - nearest).norm())
         nearest = path(2 * pi * i / 3600);
     std::vector<Vector2d>& flank = out[x.norm() < nearest.norm() ? 0 : 1];
-    const int n = 40000 / static_cast<int>(edges.size());
-    for (int i = 0; i < n; ++i) {
-      const gp_Pnt q = c->Value(a + (b - a) * i / n);
-      flank.emplace_back(q.X(), q.Y());
-    }
+    flank.insert(flank.end(), edge.begin(), edge.end());
   }
   return out;
 }
@@ -191,15 +168,9 @@ TEST(PlateGrooveOcct, GroovePlateFilesCarryBothFlanksWithinTheTolerance) {
   const CamDesign& d = run.result.project().cam;
   const double tol = run.result.project().conversion.tolerance;
   const auto path = centre_path(d);
-  IGESControl_Reader iges;
-  ASSERT_EQ(iges.ReadFile((run.dir / "groove_plate.igs").c_str()), IFSelect_RetDone);
-  iges.TransferRoots();
-  EXPECT_EQ(exchange_test::reader_messages(iges.WS(), true), "");
-  STEPControl_Reader step;
-  ASSERT_EQ(step.ReadFile((run.dir / "groove_plate.stp").c_str()), IFSelect_RetDone);
-  step.TransferRoots();
-  EXPECT_EQ(exchange_test::reader_messages(step.WS(), true), "");
-  for (const TopoDS_Shape& shape : {iges.OneShape(), step.OneShape()}) {
+  for (const char* file : {"groove_plate.igs", "groove_plate.stp"}) {
+    SCOPED_TRACE(file);
+    const TopoDS_Shape shape = exchange_test::read_exchange_file(run.dir / file);
     for (const std::vector<Vector2d>& flank : occt_flanks(shape, path)) {
       ASSERT_GT(flank.size(), 10000u);
       EXPECT_LE(test::envelope_deviation(path, d.follower.roller_radius, flank).worst(), tol);
@@ -216,11 +187,7 @@ TEST(PlateGrooveOcct, TheGroovePlateIsOneValidSolidWithTheGroovesVolume) {
   options.bore_diameter = bore;
   const ScratchDir dir("groove_solid");
   write_cam_outputs(run.result, dir.path(), options);
-  STEPControl_Reader reader;
-  ASSERT_EQ(reader.ReadFile((dir / "cam_solid.stp").c_str()), IFSelect_RetDone);
-  reader.TransferRoots();
-  EXPECT_EQ(exchange_test::reader_messages(reader.WS(), true), "");
-  const TopoDS_Shape shape = reader.OneShape();
+  const TopoDS_Shape shape = exchange_test::read_exchange_file(dir / "cam_solid.stp");
   TopTools_IndexedMapOfShape solids, faces;
   TopExp::MapShapes(shape, TopAbs_SOLID, solids);
   TopExp::MapShapes(shape, TopAbs_FACE, faces);

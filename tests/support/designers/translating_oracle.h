@@ -8,7 +8,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
-#include "designers/cam/cam_program.h"
+#include "designers/cam/cam_design.h"
 
 namespace polarform::test {
 
@@ -16,6 +16,12 @@ struct TranslatingOracle {
   CamProgram program;
   double rb = 0, rr = 0, e = 0;
   int sigma = 1;  // sense of rotation (+1: counter-clockwise)
+
+  // The oracle of a translating roller design.
+  static TranslatingOracle of(const CamDesign& d) {
+    return {make_program(d), d.base_radius, d.follower.roller_radius, d.follower.offset,
+            sense(d.rotation)};
+  }
 
   Eigen::Vector2d roller_centre(double theta) const {
     const double rp = rb + rr;
