@@ -1,5 +1,8 @@
 #include "designers/cam/cam_design.h"
 
+#include <cmath>
+
+#include "designers/cam/plate_groove.h"
 #include "src/error.h"
 
 namespace polarform {
@@ -33,7 +36,16 @@ CamProgram make_program(const CamDesign& design) { return CamProgram(design.segm
 
 PlateCam make_plate_cam(const CamDesign& design) {
   if (design.type != CamType::Plate) throw InputError("cam: not a plate cam");
-  return PlateCam(make_program(design), design.follower, design.base_radius, design.rotation);
+  PlateCam cam(make_program(design), design.follower, design.base_radius, design.rotation);
+  if (!std::isfinite(design.groove_depth) || design.groove_depth < 0)
+    throw InputError("groove-depth must be a number of mm >= 0");
+  if (design.groove_depth > 0 && design.conjugate)
+    throw InputError(
+        "groove-depth: a grooved cam is already driven both ways; it takes no "
+        "<conjugate> second cam");
+  if (design.groove_depth > 0) groove_outer_flank(cam);  // a roller follower
+  if (design.conjugate) conjugate_roller(cam, *design.conjugate);
+  return cam;
 }
 
 BarrelCam make_barrel_cam(const CamDesign& design) {

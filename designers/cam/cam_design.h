@@ -3,10 +3,12 @@
 // files, the CLI and the studio all edit this one struct. Lengths in mm, angles in radians.
 #pragma once
 
+#include <optional>
 #include <string_view>
 #include <vector>
 
 #include "designers/cam/barrel_cam.h"
+#include "designers/cam/conjugate_cam.h"
 #include "designers/cam/plate_cam.h"
 
 namespace polarform {
@@ -30,9 +32,12 @@ struct CamDesign {
   double rpm = 300.0;
   double cylinder_radius = 0.0;  // Rc: pitch cylinder of the track centre (cylindrical cams)
   double z0 = 0.0;               // track height at s = 0 (cylindrical cams)
-  // Radial depth of the groove walls, centred on the pitch cylinder: they span Rc ± depth/2
-  // (cylindrical cams); 0 = no groove surfaces.
+  // Cylindrical cams: radial depth of the groove walls, centred on the pitch cylinder: they span
+  // Rc ± depth/2. Plate cams: axial depth of a face groove in which the roller rides
+  // (plate_groove.h). 0 = no groove.
   double groove_depth = 0.0;
+  // Plate cams: a second cam driving a second roller on the same follower (conjugate_cam.h).
+  std::optional<ConjugateFollower> conjugate;
   std::vector<SegmentSpec> segments;
 
   bool operator==(const CamDesign&) const = default;

@@ -19,8 +19,7 @@ constexpr double kTwoPi = 2 * std::numbers::pi;
 constexpr int kTableSamples = 512;
 
 struct CurveTable {
-  PlateCam cam;
-  CamCurve curve;
+  CamTrace trace;
   int direction;              // sign of dψ/dθ: -σ
   std::vector<double> theta;  // increasing, 0 .. 2π
   std::vector<double> psi;    // unwrapped ψ(θ), monotone in `direction`
@@ -32,10 +31,7 @@ struct CurveTable {
 // Curve point in the cam frame as jets of order d, θ in segment `seg`.
 void curve_jets(const CurveTable& t, int seg, double theta, int d, Jet* xy) {
   Eigen::Vector2d p[4];
-  if (t.curve == CamCurve::Contour)
-    t.cam.contour_in_segment(seg, theta, d, p);
-  else
-    t.cam.pitch(theta, d, p);
+  t.trace.point(seg, theta, d, p);
   for (int c = 0; c < 2; ++c) {
     double v[4] = {};
     for (int k = 0; k <= d; ++k) v[k] = p[k](c);
@@ -48,24 +44,28 @@ double psi_rate(const Jet* xy) {
   return (xy[0][0] * xy[1][1] - xy[1][0] * xy[0][1]) / (xy[0][0] * xy[0][0] + xy[1][0] * xy[1][0]);
 }
 
-// The remedy depends on the follower: a roller's radius can be reduced, a flat face needs
-// Rb + s + s'' > 0 (a larger base radius or a gentler acceleration), a knife edge a larger base.
-[[noreturn]] void not_single_valued(double from, double to, const char* what,
-                                    FollowerKind follower) {
-  const char* remedy =
-      follower == FollowerKind::Roller ? "increase the base radius or reduce the roller radius"
-      : follower == FollowerKind::FlatFaced
-          ? "increase the base radius or lengthen the segment (a flat face needs Rb + s + s'' > 0)"
-          : "increase the base radius or lengthen the segment";
-  throw InputError("cam " + std::string(what) +
+[[noreturn]] void not_single_valued(double from, double to, const CamTrace& trace) {
+  throw InputError("cam " + trace.what +
                    " is not single-valued in polar angle between θ = " + degrees_text(from) +
-                   " and " + degrees_text(to) + " (undercut, cusp or loop); " + remedy);
+                   " and " + degrees_text(to) + " (undercut, cusp or loop); " + trace.remedy);
 }
 
-std::shared_ptr<CurveTable> build_table(const PlateCam& cam, CamCurve curve) {
-  auto t = std::make_shared<CurveTable>(CurveTable{cam, curve, -cam.sense(), {}, {}, {}, {}, {}});
-  const char* what = curve == CamCurve::Contour ? "contour" : "pitch curve";
-  const std::vector<MotionSegment>& segs = cam.program().segments();
+// The remedy depends on the follower: a roller's radius can be reduced, a flat face needs
+// Rb + s + s'' > 0 (a larger base radius or a gentler acceleration), a knife edge a larger base.
+std::string remedy(const PlateCam& cam, CamCurve curve) {
+  const FollowerKind follower =
+      curve == CamCurve::Contour ? cam.follower().kind : FollowerKind::KnifeEdge;
+  return follower == FollowerKind::Roller ? "increase the base radius or reduce the roller radius"
+         : follower == FollowerKind::FlatFaced ? "increase the base radius or lengthen the segment "
+                                                 "(a flat face needs Rb + s + s'' > 0)"
+                                               : "increase the base radius or lengthen the segment";
+}
+
+std::shared_ptr<CurveTable> build_table(CamTrace trace) {
+  const int direction = -sense(trace.rotation);
+  auto t =
+      std::make_shared<CurveTable>(CurveTable{std::move(trace), direction, {}, {}, {}, {}, {}});
+  const std::vector<MotionSegment>& segs = t->trace.program.segments();
   // Margin > 0 where ψ runs the right way.
   const auto margin = [&](int seg, double theta) {
     Jet xy[2];
@@ -101,9 +101,7 @@ std::shared_ptr<CurveTable> build_table(const PlateCam& cam, CamCurve curve) {
         const auto m = [&](double x) { return margin(s, x); };
         const double from = margins[lo] > 0 ? bisect_sign_change(m, thetas[lo], bad) : thetas[lo];
         const double to = margins[hi] > 0 ? bisect_sign_change(m, bad, thetas[hi]) : thetas[hi];
-        not_single_valued(
-            from, to, what,
-            curve == CamCurve::Contour ? cam.follower().kind : FollowerKind::KnifeEdge);
+        not_single_valued(from, to, t->trace);
       }
     }
     for (int i = s == 0 ? 0 : 1; i <= n; ++i) {
@@ -118,8 +116,9 @@ std::shared_ptr<CurveTable> build_table(const PlateCam& cam, CamCurve curve) {
   }
   const double winding = (t->psi.back() - t->psi.front()) / kTwoPi;
   if (std::abs(winding - t->direction) > 1e-6)
-    throw InputError("cam " + std::string(what) + " winds " + number_text(winding) +
-                     " times around the cam centre over 0° to 360° instead of once; it is not single-valued in polar angle");
+    throw InputError("cam " + t->trace.what + " winds " + number_text(winding) +
+                     " times around the cam centre over 0° to 360° instead of once; it is not "
+                     "single-valued in polar angle");
   return t;
 }
 
@@ -161,13 +160,39 @@ double invert(const CurveTable& t, int i, double target) {
 PolarFunction cam_polar_function(const PlateCam& cam, CamCurve curve) {
   const bool radial_knife = cam.follower().kind == FollowerKind::KnifeEdge && cam.follower().offset == 0.0;
   if (radial_knife) return displacement_polar_function(cam.program(), cam.rotation(), cam.base_radius());
+  CamTrace trace{cam.program(),
+                 cam.rotation(),
+                 {},
+                 curve == CamCurve::Contour ? "contour" : "pitch curve",
+                 remedy(cam, curve)};
+  if (curve == CamCurve::Contour)
+    trace.point = [cam](int seg, double theta, int d, Eigen::Vector2d* out) {
+      cam.contour_in_segment(seg, theta, d, out);
+    };
+  else
+    trace.point = [cam](int seg, double theta, int d, Eigen::Vector2d* out) {
+      cam.pitch_in_segment(seg, theta, d, out);
+    };
+  return traced_polar_function(std::move(trace));
+}
 
-  std::shared_ptr<const CurveTable> table = build_table(cam, curve);
+PolarFunction roller_image_polar_function(const PlateCam& cam, const RollerImage& image,
+                                          std::string what, std::string remedy) {
+  CamTrace trace{cam.program(), cam.rotation(), {}, std::move(what), std::move(remedy)};
+  trace.point = [cam, image](int seg, double theta, int d, Eigen::Vector2d* out) {
+    Eigen::Vector2d centre[4];
+    cam.roller_image_in_segment(seg, theta, d, image, centre, out);
+  };
+  return traced_polar_function(std::move(trace));
+}
+
+PolarFunction traced_polar_function(CamTrace trace) {
+  std::shared_ptr<const CurveTable> table = build_table(std::move(trace));
   PolarFunction f;
   const double psi0 = table->psi.front();  // θ = 0
   f.start = table->direction > 0 ? psi0 : psi0 - kTwoPi;
   f.end = f.start + kTwoPi;
-  for (double theta : cam.program().smoothness_breaks()) {
+  for (double theta : table->trace.program.smoothness_breaks()) {
     // ψ of the curve point at θ, unwrapped next to the table's value at the interval's start.
     const int i = static_cast<int>(std::upper_bound(table->theta.begin(), table->theta.end(), theta) -
                                    table->theta.begin()) - 1;

@@ -59,6 +59,17 @@ double pressure_angle_from(const Eigen::Vector2d& t, const Eigen::Vector2d& w, i
   return std::atan2(t.dot(w), -sigma * t.dot(perp(w)));
 }
 
+// The envelope of a circle of radius r about the roller centre q (fixed frame, jets) on the
+// turning cam, on the cam's side: q − r m/|m| with m = q + σ J q', the outward normal of the
+// centre's path relative to the cam (its relative velocity q' − σ J q turned by σ·90°). Chen,
+// Mechanics and Design of Cam Mechanisms, the envelope of a roller follower.
+void roller_envelope(const Jet* q, int sigma, double r, Jet* out) {
+  const Jet mx = q[0] + (-sigma) * q[1].derivative(), my = q[1] + double(sigma) * q[0].derivative();
+  const Jet norm = sqrt(mx * mx + my * my);
+  out[0] = q[0] + (-r) * (mx / norm);
+  out[1] = q[1] + (-r) * (my / norm);
+}
+
 // The arm angle a = κ s π/180 (radians) as a jet from s in degrees.
 Jet arm_angle(const Jet& s, int swing_sign) { return (swing_sign * kRadiansPerDegree) * s; }
 
@@ -184,7 +195,7 @@ void PlateCam::curves(const double* s, double theta, int order, Jet* pitch_xy, J
     if (contour_xy) rotate_into_cam_frame(contact[0], contact[1], rotation, contour_xy);
     return;
   }
-  const Jet qx(e, order), qy = S + rest_height();
+  const Jet qx(e, order + 1), qy = S + rest_height();  // both of S's order
   rotate_into_cam_frame(qx, qy, rotation, pitch_xy);
   if (!contour_xy) return;
   switch (follower_.kind) {
@@ -193,11 +204,11 @@ void PlateCam::curves(const double* s, double theta, int order, Jet* pitch_xy, J
       contour_xy[1] = pitch_xy[1];
       return;
     case FollowerKind::Roller: {
-      // Outward pitch normal in the follower frame: (e - σ s', y0 + s) / |.|.
-      const Jet mx = Jet(e, order) + (-sigma) * S.derivative(), my = qy;
-      const Jet norm = sqrt(mx * mx + my * my);
-      const double rr = follower_.roller_radius;
-      rotate_into_cam_frame(qx + (-rr) * (mx / norm), qy + (-rr) * (my / norm), rotation, contour_xy);
+      // The outward pitch normal in the follower frame is (e - σ s', y0 + s).
+      const Jet q[2] = {qx, qy};
+      Jet contact[2];
+      roller_envelope(q, sigma, follower_.roller_radius, contact);
+      rotate_into_cam_frame(contact[0], contact[1], rotation, contour_xy);
       return;
     }
     case FollowerKind::FlatFaced:
@@ -223,12 +234,7 @@ void PlateCam::oscillating_curves(const Jet& S, Jet* reference_xy, Jet* contact_
     const double wx = -px, wy = prime_radius() - py;  // Q0 − P
     const Jet qx = wx * c + (-wy) * s + px, qy = wx * s + wy * c + py;
     reference_xy[0] = qx, reference_xy[1] = qy;
-    if (!contact_xy) return;
-    const Jet mx = qx + (-sigma) * qy.derivative(), my = qy + double(sigma) * qx.derivative();
-    const Jet norm = sqrt(mx * mx + my * my);
-    const double rr = follower_.roller_radius;
-    contact_xy[0] = qx + (-rr) * (mx / norm);
-    contact_xy[1] = qy + (-rr) * (my / norm);
+    if (contact_xy) roller_envelope(reference_xy, sigma, follower_.roller_radius, contact_xy);
     return;
   }
   const Jet h = (-px) * s + py * c + (-follower_.face_offset);  // n = (−sin a, cos a)
@@ -277,6 +283,51 @@ void PlateCam::pitch(double theta, int d, Eigen::Vector2d* out) const {
   Jet xy[2];
   curves(s, theta, d, xy, nullptr);
   for (int k = 0; k <= d; ++k) out[k] = {xy[0][k], xy[1][k]};
+}
+
+void PlateCam::pitch_in_segment(int segment, double theta, int d, Eigen::Vector2d* out) const {
+  if (d < 0 || d > 3)
+    throw InputError("plate cam: derivative order " + std::to_string(d) + " outside [0, 3]");
+  double s[5];
+  program_.segments().at(segment).derivatives(theta, d + 1, s);
+  Jet xy[2];
+  curves(s, theta, d, xy, nullptr);
+  for (int k = 0; k <= d; ++k) out[k] = {xy[0][k], xy[1][k]};
+}
+
+void PlateCam::roller_centre(const Jet& S, Jet* xy) const {
+  if (is_oscillating(follower_.kind)) {
+    oscillating_curves(S, xy, nullptr);
+    return;
+  }
+  xy[0] = Jet(follower_.offset, S.order());
+  xy[1] = S + rest_height();
+}
+
+// The image's centre is a similarity of the roller centre; the similarity commutes with the cam's
+// rotation, so the envelope construction of the follower's own roller applies unchanged.
+void PlateCam::roller_image_in_segment(int segment, double theta, int d, const RollerImage& image,
+                                       Eigen::Vector2d* centre, Eigen::Vector2d* contact) const {
+  if (!has_roller(follower_.kind))
+    throw InputError("plate cam: a roller image needs a roller follower");
+  if (d < 0 || d > 3)
+    throw InputError("plate cam: derivative order " + std::to_string(d) + " outside [0, 3]");
+  double s[5];
+  program_.segments().at(segment).derivatives(theta, d + 1, s);
+  Jet q[2];
+  roller_centre(Jet::from(s, d + 1), q);
+  const double a = image.scale * std::cos(image.turn), b = image.scale * std::sin(image.turn);
+  const Jet image_q[2] = {a * q[0] + (-b) * q[1] + image.shift.x(),
+                          b * q[0] + a * q[1] + image.shift.y()};
+  Jet envelope[2], centre_xy[2], contact_xy[2];
+  roller_envelope(image_q, sense(), image.radius, envelope);
+  const RotationJets rotation(theta, sense(), d);
+  rotate_into_cam_frame(image_q[0], image_q[1], rotation, centre_xy);
+  rotate_into_cam_frame(envelope[0], envelope[1], rotation, contact_xy);
+  for (int k = 0; k <= d; ++k) {
+    centre[k] = {centre_xy[0][k], centre_xy[1][k]};
+    contact[k] = {contact_xy[0][k], contact_xy[1][k]};
+  }
 }
 
 void PlateCam::contour(double theta, int d, Eigen::Vector2d* out) const {

@@ -40,6 +40,17 @@ inline bool is_flat_faced(FollowerKind k) {
   return k == FollowerKind::FlatFaced || k == FollowerKind::OscillatingFlatFaced;
 }
 
+// A roller carried rigidly by the follower, seen from its roller: its centre is
+// scale·R(turn)·Q + shift in the fixed frame, Q the follower's own roller centre (a similarity
+// that commutes with the cam's rotation), and its envelope on the turning cam lies `radius` from
+// that centre towards the cam (radius < 0: away from it). The follower's roller is {1, 0, 0, Rr};
+// a groove's outer flank {1, 0, 0, −Rr}; a conjugate cam's roller conjugate_cam.h.
+struct RollerImage {
+  double scale = 1.0, turn = 0.0;  // turn: rad, counter-clockwise
+  Eigen::Vector2d shift = Eigen::Vector2d::Zero();
+  double radius = 0.0;
+};
+
 struct Follower {
   FollowerKind kind = FollowerKind::Roller;
   double offset = 0.0;         // e, mm, translating followers (no effect on a flat face's geometry)
@@ -108,6 +119,13 @@ class PlateCam {
   // at its ends).
   void contour_in_segment(int segment, double theta, int d, Eigen::Vector2d* out) const;
 
+  // Rollers only (InputError otherwise): the centre path and the envelope of `image` in the cam
+  // frame, θ-derivatives 0..d (d <= 3), θ in [start, end] of `segment` (one-sided at its ends).
+  void roller_image_in_segment(int segment, double theta, int d, const RollerImage& image,
+                               Eigen::Vector2d* centre, Eigen::Vector2d* contact) const;
+  // The pitch curve as above, evaluating `segment` only.
+  void pitch_in_segment(int segment, double theta, int d, Eigen::Vector2d* out) const;
+
   double pressure_angle(double theta) const;
   // Signed radii of curvature (mm), positive where convex; ±infinity at an inflection.
   double pitch_radius_of_curvature(double theta) const;
@@ -121,6 +139,8 @@ class PlateCam {
   // Pitch and contour points in the cam frame as jets of order `order` (<= 3) from s..s^(order+1).
   void curves(const double* s, double theta, int order, Jet* pitch_xy, Jet* contour_xy) const;
   double rest_height() const;  // y0
+  // Rollers: the roller centre in the fixed frame as jets of S's order.
+  void roller_centre(const Jet& S, Jet* xy) const;
   void place_pivot();          // pivot_ and swing_sign_ of an oscillating follower
   // Oscillating followers: the follower's reference point (roller centre, or the face's foot point
   // of the perpendicular from the origin) and the contact point in the fixed frame, as jets.

@@ -9,6 +9,7 @@
 
 #include "designers/cam/cam_frame.h"
 #include "designers/cam/contour_polar_function.h"
+#include "designers/cam/plate_groove.h"
 #include "designers/convert/conversion_error.h"
 #include "src/error.h"
 #include "src/number_text.h"
@@ -160,6 +161,28 @@ PlateProfile plate_profile(const CamProject& project, const CamConversionStage& 
   return p;
 }
 
+// The outer flank of a grooved plate cam or the second contour of a conjugate one, if any.
+std::optional<CompanionCurve> companion_curve(const CamProject& project, const PlateCam& cam,
+                                              const CamJobOptions& options) {
+  const CamDesign& d = project.cam;
+  CompanionCurve c;
+  if (d.conjugate) {
+    c.kind = CompanionKind::ConjugateContour;
+    c.function = conjugate_contour_function(cam, *d.conjugate);
+  } else if (d.groove_depth > 0) {
+    c.kind = CompanionKind::GrooveOuterFlank;
+    c.function = groove_outer_flank_function(cam);
+  } else {
+    return std::nullopt;
+  }
+  c.conversion = convert_polar_function(c.function, project.conversion);
+  c.error = measure_error(c.conversion, c.function, options.error_samples);
+  if (project.max_degree && c.conversion.curve.degree() > *project.max_degree)
+    c.capped =
+        approximate_polar_curve(c.function, *project.max_degree, project.conversion.tolerance);
+  return c;
+}
+
 CylindricalTrack cylindrical_track(const CamProject& project, const BarrelCam& barrel,
                                    const CamConversionStage& stage, double offset) {
   const CamDesign& d = project.cam;
@@ -306,6 +329,7 @@ CamConversionStage convert_cam(const CamDesignStage& design, const CamJobOptions
     conversion.compaction = Compaction::full;
     c.conversion = convert_polar_function(c.profile_function, conversion);
     c.profile = plate_profile(project, c, options, c.warnings);
+    c.companion = companion_curve(project, *plate, options);
   } else {
     const auto& barrel = std::get<BarrelCam>(design.cam);
     const double offset = track_height_offset(project.cam);

@@ -6,7 +6,8 @@
 //            curvature, undercut) or the cylindrical cam's pressure angle at the pitch radius;
 //   convert  the exact NURBS profile (plate contour or cylindrical track centre line) within the
 //            tolerance, its measured radial error along the profile, the degree-limited and the
-//            degree-capped profiles, the groove walls.
+//            degree-capped profiles, the groove walls, a grooved plate cam's outer flank or a
+//            conjugate cam's second contour.
 // The result value is what the studio shows and what the output bundle (cam_outputs.h) writes.
 // Computing writes nothing.
 #pragma once
@@ -133,11 +134,27 @@ struct CylindricalTrack {
   std::vector<GrooveSurface> groove;
 };
 
+// A plate cam's second exported curve: a grooved cam's outer flank (the profile is its inner
+// flank) or a conjugate cam's second contour, converted within the tolerance and measured like
+// the profile.
+enum class CompanionKind { GrooveOuterFlank, ConjugateContour };
+
+struct CompanionCurve {
+  CompanionKind kind = CompanionKind::GrooveOuterFlank;
+  PolarFunction function;              // R(ψ) of the exact curve
+  PolarConversion conversion;          // of function
+  ErrorCurve error;                    // measured along the NURBS curve
+  std::optional<LimitedCurve> capped;  // when the exact degree exceeds the project's max-degree
+  // The curve the CAD files carry: the capped curve when there is one, else the exact one.
+  const NurbsCurve2d& exported() const { return capped ? capped->curve : conversion.curve; }
+};
+
 struct CamConversionStage {
   PolarFunction profile_function;  // contour R(ψ) (plate) or track height + offset (cylindrical)
   PolarConversion conversion;      // of profile_function
   ErrorCurve error;
   std::variant<PlateProfile, CylindricalTrack> profile;  // as the design's cam
+  std::optional<CompanionCurve> companion;               // a grooved or conjugate plate cam
   // What the stage left out and why (a degree-limited profile that cannot meet the tolerance).
   std::vector<std::string> warnings;
 

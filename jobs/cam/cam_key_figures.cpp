@@ -58,6 +58,16 @@ std::vector<KeyFigure> cam_design_inputs(const CamDesignStage& design) {
     out.push_back({"cam", "cylindrical cam, pitch cylinder radius " + mm(d.cylinder_radius) + ", " +
                               follower_text(d)});
   }
+  if (d.type == CamType::Plate && d.groove_depth > 0)
+    out.push_back({"groove", "face groove " + mm(d.groove_depth) +
+                                 " deep between the flanks pitch ∓ roller radius"});
+  if (d.conjugate)
+    out.push_back({"conjugate cam", is_oscillating(d.follower.kind)
+                                        ? "second arm " + mm(d.conjugate->arm_length) + " long, " +
+                                              degrees_text(d.conjugate->arm_angle) +
+                                              " from the first about the pivot"
+                                        : "second roller " + mm(d.conjugate->roller_distance) +
+                                              " beyond the first on the follower axis"});
   out.push_back({"speed", number_text(d.rpm) + " rev/min, " +
                               (d.rotation == Rotation::CounterClockwise ? "counter-clockwise"
                                                                         : "clockwise")});
@@ -148,6 +158,14 @@ std::vector<KeyFigure> cam_key_results(const CamDesignStage& design,
     out.push_back({"measured error", "max radial " + mm(c.max_radial_error) + ", max normal " +
                                          mm(c.max_normal_error) + " (tolerance " + mm(c.tolerance) +
                                          ")"});
+    if (const auto& second = conversion->companion) {
+      const PolarConversion& k = second->conversion;
+      out.push_back({second->kind == CompanionKind::GrooveOuterFlank ? "NURBS groove outer flank"
+                                                                     : "NURBS conjugate contour",
+                     "degree " + std::to_string(k.curve.degree()) + ", " +
+                         std::to_string(k.curve.size()) + " control points, measured max radial " +
+                         mm(k.max_radial_error) + ", max normal " + mm(k.max_normal_error)});
+    }
   }
   return out;
 }

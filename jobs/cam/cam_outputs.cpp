@@ -1,5 +1,6 @@
 #include "jobs/cam/cam_outputs.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -10,6 +11,7 @@
 #include "export/dxf_writer.h"
 #include "export/html_report.h"
 #include "export/iges_writer.h"
+#include "export/step_grooved_plate.h"
 #include "export/step_solid.h"
 #include "export/step_writer.h"
 #include "export/svg_plot.h"
@@ -74,6 +76,46 @@ std::string svaj_csv(const CamDesignStage& design, const CamAnalysisStage& analy
     csv.row(row);
   }
   return csv.str();
+}
+
+// A grooved cam's flanks (groove_plate.*, with --solid the groove plate as cam_solid.stp) or a
+// conjugate cam's second contour (conjugate.*, with --solid conjugate_solid.stp).
+void add_companion_files(const CamJobResult& r, const CompanionCurve& companion,
+                         const CamOutputOptions& o, IgesHeader iges, StepHeader step,
+                         std::map<std::string, std::string>& content) {
+  const NurbsCurve2d& profile = std::get<PlateProfile>(r.conversion.profile).exported();
+  const NurbsCurve2d& second = companion.exported();
+  const bool groove = companion.kind == CompanionKind::GrooveOuterFlank;
+  const std::string stem = groove ? "groove_plate" : "conjugate";
+  IgesWriter igs;
+  StepWriter stp(o.design_name);
+  DxfWriter dxf(DxfOptions{std::max({10, profile.degree(), second.degree()}), 1e-6});
+  if (groove) {
+    igs.add(profile, "GROOVE INNER FLANK");
+    stp.add(profile, "groove inner flank");
+    dxf.add(profile, "GROOVE_INNER");
+    igs.add(second, "GROOVE OUTER FLANK");
+    stp.add(second, "groove outer flank");
+    dxf.add(second, "GROOVE_OUTER");
+  } else {
+    igs.add(second, "CONJUGATE CAM");
+    stp.add(second, "conjugate cam contour");
+    dxf.add(second, "CONJUGATE");
+  }
+  iges.file_name = stem + ".igs";
+  step.file_name = stem + ".stp";
+  content[stem + ".igs"] = igs.str(iges);
+  content[stem + ".stp"] = stp.str(step);
+  content[stem + ".dxf"] = dxf.str();
+  if (!o.solid_thickness) return;
+  const CamDesign& d = r.project().cam;
+  step.file_name = groove ? "cam_solid.stp" : "conjugate_solid.stp";
+  content[step.file_name] =
+      groove
+          ? step_grooved_plate_solid({profile, second, d.follower.roller_radius, *o.solid_thickness,
+                                      d.groove_depth, o.bore_diameter},
+                                     o.design_name, step)
+          : step_extruded_solid(second, *o.solid_thickness, o.bore_diameter, o.design_name, step);
 }
 
 std::vector<std::pair<std::string, std::string>> pairs(const std::vector<KeyFigure>& figures) {
@@ -146,6 +188,21 @@ std::string html_report(const CamJobResult& r, const CamOutputOptions& o, const 
         " mm, the height Z fitted to the exact roller envelope; the error is the "
         "largest height gap at equal polar angle and radius, measured densely.");
   }
+  if (const auto& second = r.conversion.companion) {
+    const PolarConversion& k = second->conversion;
+    const bool groove = second->kind == CompanionKind::GrooveOuterFlank;
+    html.add_heading(groove ? "Groove outer flank" : "Conjugate (second) cam");
+    html.add_paragraph(
+        std::string(groove
+                        ? "The groove's outer flank, pitch curve + roller radius along its normal "
+                          "(the profile is the inner flank; both in groove_plate.igs/.stp/.dxf)"
+                        : "The second cam's contour, driving the follower's second roller "
+                          "(conjugate.igs/.stp/.dxf)") +
+        ": degree " + std::to_string(k.curve.degree()) + ", " + std::to_string(k.curve.size()) +
+        " control points, " + std::to_string(k.arcs.size()) + " arcs, measured max radial error " +
+        format_trimmed(to_micrometres(k.max_radial_error), 4) + " µm, max normal error " +
+        format_trimmed(to_micrometres(k.max_normal_error), 4) + " µm.");
+  }
   const auto* profile = std::get_if<PlateProfile>(&r.conversion.profile);
   if (profile && profile->limited) {
     const LimitedCurve& l = *profile->limited;
@@ -211,7 +268,9 @@ std::map<std::string, std::string> render_cam_outputs(const CamJobResult& r,
       content["profile_deg" + std::to_string(profile->limited->curve.degree()) + ".dxf"] =
           limited.str();
     }
-    if (o.solid_thickness)
+    const auto& companion = r.conversion.companion;
+    if (companion) add_companion_files(r, *companion, o, iges, step, content);
+    if (o.solid_thickness && !(companion && companion->kind == CompanionKind::GrooveOuterFlank))
       content["cam_solid.stp"] = step_extruded_solid(curve, *o.solid_thickness, o.bore_diameter,
                                                      o.design_name, step);
   } else {

@@ -255,6 +255,11 @@ Figure plate_profile_figure(const CamDesignStage& d, const CamAnalysisStage& a,
              "#0072b2");
   add_points(plot, "control polygon", curve.control_points(), Series::Style::line_markers,
              "#cc79a7");
+  if (const auto& second = c.companion)
+    add_points(plot,
+               second->kind == CompanionKind::GrooveOuterFlank ? "groove outer flank (NURBS)"
+                                                               : "conjugate cam (NURBS)",
+               tessellate(second->conversion.curve, 2000).points, Series::Style::line, "#d55e00");
   add_circle(plot, "base circle", d.project.cam.base_radius, Series::Style::dashed);
   if (has_roller(d.project.cam.follower.kind))
     add_points(plot, "pitch curve", std::get<PlateCamAnalysis>(a.cam).curves.pitch,

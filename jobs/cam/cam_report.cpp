@@ -65,8 +65,29 @@ void add_design_fields(json& j, const CamDesignStage& r) {
 }
 
 // The exact NURBS profile or track and the groove walls.
+// A grooved cam's outer flank ("groove") or a conjugate cam's second contour ("conjugate").
+void add_companion_fields(json& j, const CamDesign& d, const CompanionCurve& c) {
+  json curve;
+  const NurbsCurve2d& exact = c.conversion.curve;
+  add_conversion_fields(curve, c.conversion, exact.degree(), exact.size(), exact.knots().size());
+  if (c.capped)
+    curve["exported"] = {{"degree", c.capped->curve.degree()},
+                         {"control_points", c.capped->control_points},
+                         {"max_radial_error_mm", c.capped->max_radial_error}};
+  if (c.kind == CompanionKind::GrooveOuterFlank) {
+    j["groove"] = {{"depth_mm", d.groove_depth}, {"outer_flank", std::move(curve)}};
+    return;
+  }
+  j["conjugate"] = is_oscillating(d.follower.kind)
+                       ? json{{"arm_angle_deg", d.conjugate->arm_angle * kDegreesPerRadian},
+                              {"arm_length_mm", d.conjugate->arm_length}}
+                       : json{{"roller_distance_mm", d.conjugate->roller_distance}};
+  j["conjugate"]["contour"] = std::move(curve);
+}
+
 void add_profile_fields(json& j, const CamDesignStage& d, const CamConversionStage& c) {
   add_conversion_fields(j, c.conversion, c.degree(), c.control_points(), c.knot_count());
+  if (c.companion) add_companion_fields(j, d.project.cam, *c.companion);
   const auto* track = std::get_if<CylindricalTrack>(&c.profile);
   if (!track || track->groove.empty()) return;
   const GrooveSurface& g = track->groove.front();

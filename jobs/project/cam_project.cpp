@@ -156,6 +156,28 @@ void read_arm(const XmlElementReader& r, Follower& f) {
   f.pivot_side = r.choice("pivot-side", {"right", "left"}, "right") == "right" ? 1 : -1;
 }
 
+// <conjugate roller-distance="mm"/> (translating roller) or <conjugate arm-angle="deg"
+// arm-length="mm"/> (oscillating roller): the second cam's roller (conjugate_cam.h).
+ConjugateFollower read_conjugate(const XmlElementReader& r, const CamDesign& d,
+                                 std::vector<UnknownName>& unknown) {
+  ConjugateFollower c;
+  if (d.follower.kind == FollowerKind::Roller) {
+    c.roller_distance = r.positive("roller-distance");
+  } else if (d.follower.kind == FollowerKind::OscillatingRoller) {
+    c.arm_angle = r.number("arm-angle") * kRadiansPerDegree;
+    if (!(std::abs(c.arm_angle) < std::numbers::pi))
+      r.fail("arm-angle", "an angle in (−180, 180) degrees from the first arm to the second");
+    c.arm_length = r.positive("arm-length");
+  } else {
+    throw InputError(r.where() +
+                     ": <conjugate> needs a roller or oscillating-roller follower, not "
+                     "a " +
+                     std::string(follower_kind_name(d.follower.kind)) + " follower");
+  }
+  r.collect_unknown_names(unknown);
+  return c;
+}
+
 CamDesign read_cam(const XmlElementReader& r, const std::string& file,
                    std::vector<UnknownName>& unknown) {
   CamDesign d;
@@ -179,6 +201,13 @@ CamDesign read_cam(const XmlElementReader& r, const std::string& file,
   if (!(d.rpm <= kMaxRpm)) r.fail("rpm", "a speed in (0, " + number_text(kMaxRpm) + "] rev/min");
   if (d.type == CamType::Plate) {
     d.base_radius = r.positive("base-radius");
+    d.groove_depth = r.positive("groove-depth", 0.0, true);  // a face groove (plate_groove.h)
+    if (d.groove_depth > 0 && !has_roller(d.follower.kind))
+      r.fail("groove-depth", "no groove for a " + std::string(follower_kind_name(d.follower.kind)) +
+                                 " follower: a grooved plate cam needs a roller or "
+                                 "oscillating-roller follower");
+    if (const XMLElement* conjugate = r.child("conjugate"))
+      d.conjugate = read_conjugate(XmlElementReader(conjugate, file), d, unknown);
   } else {
     d.base_radius = r.positive("base-radius", 0.0, true);
     d.cylinder_radius = r.positive("cylinder-radius");
@@ -247,6 +276,7 @@ void to_millimetres(CamDesign& d, double unit) {
                          &d.follower.pivot_distance, &d.follower.arm_length,
                          &d.follower.face_offset, &d.cylinder_radius, &d.z0, &d.groove_depth})
     *length *= unit;
+  if (d.conjugate) d.conjugate->roller_distance *= unit, d.conjugate->arm_length *= unit;
   if (is_oscillating(d.follower.kind)) return;
   for (SegmentSpec& s : d.segments) {
     s.lift *= unit;
@@ -340,9 +370,19 @@ std::string cam_project_xml(const CamProject& p) {
   if (d.type == CamType::Cylindrical) {
     attr("cylinder-radius", number(d.cylinder_radius));
     attr("z0", number(d.z0));
-    if (d.groove_depth > 0) attr("groove-depth", number(d.groove_depth));
   }
+  if (d.groove_depth > 0) attr("groove-depth", number(d.groove_depth));
   out << ">\n";
+  if (d.conjugate) {
+    out << "    <conjugate";
+    if (d.follower.kind == FollowerKind::OscillatingRoller) {
+      attr("arm-angle", number(degrees_for(d.conjugate->arm_angle)));
+      attr("arm-length", number(d.conjugate->arm_length));
+    } else {
+      attr("roller-distance", number(d.conjugate->roller_distance));
+    }
+    out << "/>\n";
+  }
   for (const SegmentSpec& s : d.segments) {
     out << "    <segment";
     attr("kind", std::string(segment_kind_name(s.kind)));

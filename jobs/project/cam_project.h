@@ -36,12 +36,13 @@ struct CamProject {
 //   <polarform version="1" units="mm|inch">   (units: of every length; also on <cam>)
 //     <cam type="plate|cylindrical" follower="knife-edge|roller|flat-faced" base-radius="mm"
 //          roller-radius="mm" offset="mm" rotation="ccw|cw" rpm="1/min" cylinder-radius="mm"
-//          z0="mm" groove-depth="mm, walls at cylinder-radius ± depth/2 (cylindrical)"
-//          pressure-angle-limit="deg, in (0, 90)">
+//          z0="mm" groove-depth="mm, walls at cylinder-radius ± depth/2 (cylindrical); a face
+//          groove's depth (plate, roller followers)" pressure-angle-limit="deg, in (0, 90)">
 //       <segment kind="dwell|rise|return" law="…" lift="mm" from="deg" to="deg" name="…"
 //                degree="5" control-values="10" minimise="1|2|3">   (degree…: law="bspline")
 //         <start v="mm/rad" a="mm/rad²" j="mm/rad³"/>  <end …/>   (law="polynomial|bspline")
 //       </segment>…
+//       <conjugate roller-distance="mm"/>  or  <conjugate arm-angle="deg" arm-length="mm"/>
 //     </cam>
 //     <conversion tolerance="mm, >= kMinTolerance" base="quasi-uniform|rqb"
 //                 alpha="minimax|printed" max-degree=""/>

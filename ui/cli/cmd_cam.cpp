@@ -100,7 +100,9 @@ void add_cam_command(CLI::App& app) {
       "cam",
       "Design a plate or cylindrical cam from a project file and export its exact NURBS profile.\n"
       "Writes profile.igs/.stp/.dxf/.x3d (track.* for cylindrical cams), profile_deg3.dxf,\n"
-      "svaj.csv, svaj.svg, analysis.svg, profile.svg, error.svg, report.json and report.html.\n"
+      "svaj.csv, svaj.svg, analysis.svg, profile.svg, error.svg, report.json and report.html;\n"
+      "groove_plate.igs/.stp/.dxf for a grooved plate cam, conjugate.igs/.stp/.dxf for a\n"
+      "conjugate one.\n"
       "An undercut design exits 2 and writes only its analyses (svaj.*, analysis.svg, reports\n"
       "marked infeasible), into --out if it is empty, else into OUT.infeasible beside it.");
   cmd->add_option("design", args->design, "cam project file (XML, see docs/file-formats.md)")
@@ -116,7 +118,8 @@ void add_cam_command(CLI::App& app) {
       ->check(CLI::Range(1, 40));
   auto* solid = cmd->add_option("--solid", args->solid,
                                 "also write the plate cam as a solid of this thickness in mm "
-                                "(cam_solid.stp)")
+                                "(cam_solid.stp; a grooved cam's plate with its groove; "
+                                "conjugate_solid.stp for a conjugate cam's second cam)")
                     ->check(positive_mm());
   cmd->add_option("--bore", args->bore, "bore diameter of the solid in mm")
       ->check(positive_mm())

@@ -19,7 +19,8 @@ namespace {
 
 using namespace cam_job_test;
 
-std::set<std::string> promised_files(bool plate, bool dynamics) {
+// companion: "groove_plate" (grooved.xml) or "conjugate" (conjugate.xml) for their three CAD files.
+std::set<std::string> promised_files(bool plate, bool dynamics, const std::string& companion) {
   const std::string stem = plate ? "profile" : "track";
   std::set<std::string> files = {stem + ".igs", stem + ".stp", stem + ".dxf", stem + ".x3d",
                                  "profile.svg", "svaj.csv",    "svaj.svg",    "analysis.svg",
@@ -27,6 +28,8 @@ std::set<std::string> promised_files(bool plate, bool dynamics) {
   if (plate) files.insert("profile_deg3.dxf");
   if (!plate) files.insert({"groove.igs", "groove.stp"});  // cylindrical.xml asks for the groove
   if (dynamics) files.insert({"force.svg", "torque.svg", "stress.svg"});  // scca_dynamics.xml
+  if (!companion.empty())
+    files.insert({companion + ".igs", companion + ".stp", companion + ".dxf"});
   return files;
 }
 
@@ -34,7 +37,10 @@ TEST(CamOutputs, EveryPromisedFileExistsNonEmptyAndIsListed) {
   for (const std::string& name : kExampleNames) {
     const ExampleRun& run = example(name);
     const std::set<std::string> promised =
-        promised_files(run.result.plate(), run.result.analysis.dynamics.has_value());
+        promised_files(run.result.plate(), run.result.analysis.dynamics.has_value(),
+                       name == "grooved"     ? "groove_plate"
+                       : name == "conjugate" ? "conjugate"
+                                             : "");
     const std::map<std::string, std::string> files = snapshot(run.dir.path());
     std::set<std::string> written;
     for (const auto& [file, content] : files) {

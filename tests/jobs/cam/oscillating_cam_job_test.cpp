@@ -1,9 +1,9 @@
 // Oscillating followers end to end: the cam job's exact NURBS profile, for the bundled examples and
 // random swing-arm designs, measured against the independent arm oracle (tests/support/designers/
-// arm_oracle.h) by dense sampling — every point of a roller cam's profile at the roller radius from
-// the roller centres, a flat-faced cam's support function equal to the face's height — within the
-// tolerance; and profile.igs / profile.stp read back through Open CASCADE and measured the same
-// way.
+// arm_oracle.h) by dense sampling (envelope_deviation.h) — every point of a roller cam's profile at
+// the roller radius from the roller centres, a flat-faced cam's support function equal to the
+// face's height — within the tolerance; and profile.igs / profile.stp read back through Open
+// CASCADE and measured the same way.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -18,10 +18,9 @@
 #include "src/units.h"
 #include "tests/support/designers/arm_oracle.h"
 #include "tests/support/jobs/cam_job_support.h"
+#include "tests/support/jobs/envelope_deviation.h"
 
 #if POLARFORM_HAVE_OCCT
-#include <BRep_Tool.hxx>
-#include <Geom_Curve.hxx>
 #include <IGESControl_Reader.hxx>
 #include <STEPControl_Reader.hxx>
 
@@ -36,72 +35,18 @@ using Eigen::Vector2d;
 using test::ArmOracle;
 constexpr double pi = std::numbers::pi;
 
-ArmOracle oracle_of(const CamProject& p) {
-  const CamDesign& d = p.cam;
-  return {make_program(d),
-          d.base_radius,
-          d.follower.roller_radius,
-          d.follower.pivot_distance,
-          d.follower.arm_length,
-          d.follower.face_offset,
-          d.follower.pivot_side,
-          sense(d.rotation),
-          d.follower.kind == FollowerKind::OscillatingRoller};
-}
+ArmOracle oracle_of(const CamProject& p) { return ArmOracle::of(p.cam); }
 
-struct Deviation {
-  double outside = 0.0;  // largest distance beyond the exact contour (into the follower), mm
-  double inside = 0.0;   // largest distance inside it (into the cam), mm
-  double worst() const { return std::max(outside, inside); }
-};
+using test::dense_points;
+using test::Deviation;
 
-// Roller: each profile point's distance to the nearest roller centre, minus Rr (nearest by a
-// window around the previous point's, refined by a ternary search on θ), and each roller centre's
-// distance to the profile points. Flat face: the profile's support function against h(θ).
+// Roller: the profile against the oracle's roller centres (envelope_deviation.h). Flat face: the
+// profile's support function against h(θ).
 Deviation deviation(const ArmOracle& o, const std::vector<Vector2d>& profile) {
+  if (o.roller)
+    return test::envelope_deviation(
+        [&](double t) { return Vector2d(o.to_cam(o.roller_centre(t), t)); }, o.rr, profile);
   Deviation dev;
-  const int n = 7200;
-  if (o.roller) {
-    std::vector<Vector2d> centres(n);
-    for (int i = 0; i < n; ++i)
-      centres[i] = o.to_cam(o.roller_centre(2 * pi * i / n), 2 * pi * i / n);
-    int near = 0;
-    for (int i = 1; i < n; ++i)
-      if ((profile[0] - centres[i]).norm() < (profile[0] - centres[near]).norm()) near = i;
-    for (const Vector2d& x : profile) {
-      const int from = near;
-      for (int k = -60; k <= 60; ++k) {
-        const int i = ((from + k) % n + n) % n;
-        if ((x - centres[i]).norm() < (x - centres[near]).norm()) near = i;
-      }
-      double lo = 2 * pi * (near - 1) / n, hi = 2 * pi * (near + 1) / n;
-      const auto distance = [&](double t) { return (x - o.to_cam(o.roller_centre(t), t)).norm(); };
-      for (int it = 0; it < 40; ++it) {  // (2/3)^40 of 1e-3 rad
-        const double a = lo + (hi - lo) / 3, b = hi - (hi - lo) / 3;
-        if (distance(a) < distance(b))
-          hi = b;
-        else
-          lo = a;
-      }
-      const double gap = distance(0.5 * (lo + hi)) - o.rr;
-      dev.outside = std::max(dev.outside, gap), dev.inside = std::max(dev.inside, -gap);
-    }
-    // The profile covers the whole contour: every 10th roller centre has a profile point at Rr
-    // (nearest by a window around the previous centre's, as both run round the cam in order).
-    const int m = static_cast<int>(profile.size()), window = m / 100 + 2;
-    int at = 0;
-    for (int i = 1; i < m; ++i)
-      if ((profile[i] - centres[0]).norm() < (profile[at] - centres[0]).norm()) at = i;
-    for (int i = 0; i < n; i += 10) {
-      const int from = at;
-      for (int k = -window; k <= window; ++k) {
-        const int j = ((from + k) % m + m) % m;
-        if ((profile[j] - centres[i]).norm() < (profile[at] - centres[i]).norm()) at = j;
-      }
-      dev.outside = std::max(dev.outside, (profile[at] - centres[i]).norm() - o.rr);
-    }
-    return dev;
-  }
   for (int i = 0; i < 1440; ++i) {
     const double theta = 2 * pi * i / 1440;
     const Vector2d normal = o.to_cam(o.face_normal(theta), theta);
@@ -111,13 +56,6 @@ Deviation deviation(const ArmOracle& o, const std::vector<Vector2d>& profile) {
     dev.outside = std::max(dev.outside, gap), dev.inside = std::max(dev.inside, -gap);
   }
   return dev;
-}
-
-std::vector<Vector2d> dense_points(const NurbsCurve2d& c, int count) {
-  std::vector<Vector2d> out;
-  const double a = c.front(), b = c.back();
-  for (int i = 0; i < count; ++i) out.push_back(c.point(a + (b - a) * i / count));
-  return out;
 }
 
 CamProject example_project(const std::string& name) {
@@ -199,22 +137,6 @@ TEST(OscillatingCamJob, RandomDesignsMeetTheToleranceAgainstTheArmOracle) {
 
 #if POLARFORM_HAVE_OCCT
 
-// Every edge Open CASCADE makes of a file, sampled densely.
-std::vector<Vector2d> occt_points(const TopoDS_Shape& shape) {
-  std::vector<Vector2d> out;
-  const std::vector<TopoDS_Edge> edges = exchange_test::edges_of(shape);
-  for (const TopoDS_Edge& e : edges) {
-    double a = 0, b = 0;
-    const Handle(Geom_Curve) c = BRep_Tool::Curve(e, a, b);
-    const int n = 40000 / static_cast<int>(edges.size());
-    for (int i = 0; i < n; ++i) {
-      const gp_Pnt q = c->Value(a + (b - a) * i / n);
-      out.emplace_back(q.X(), q.Y());
-    }
-  }
-  return out;
-}
-
 TEST(OscillatingCamJob, OpenCascadeReadsProfilesWithinTheToleranceOfTheArmOracle) {
   for (const std::string name : {"oscillating_roller", "oscillating_flat_faced"}) {
     SCOPED_TRACE(name);
@@ -226,14 +148,16 @@ TEST(OscillatingCamJob, OpenCascadeReadsProfilesWithinTheToleranceOfTheArmOracle
     ASSERT_EQ(iges.ReadFile((dir / "profile.igs").c_str()), IFSelect_RetDone);
     iges.TransferRoots();
     EXPECT_EQ(exchange_test::reader_messages(iges.WS(), true), "");
-    EXPECT_LE(deviation(oracle_of(p), occt_points(iges.OneShape())).worst(),
-              p.conversion.tolerance);
+    EXPECT_LE(
+        deviation(oracle_of(p), exchange_test::sampled_points(iges.OneShape(), 40000)).worst(),
+        p.conversion.tolerance);
     STEPControl_Reader step;
     ASSERT_EQ(step.ReadFile((dir / "profile.stp").c_str()), IFSelect_RetDone);
     step.TransferRoots();
     EXPECT_EQ(exchange_test::reader_messages(step.WS(), true), "");
-    EXPECT_LE(deviation(oracle_of(p), occt_points(step.OneShape())).worst(),
-              p.conversion.tolerance);
+    EXPECT_LE(
+        deviation(oracle_of(p), exchange_test::sampled_points(step.OneShape(), 40000)).worst(),
+        p.conversion.tolerance);
   }
 }
 

@@ -63,7 +63,7 @@ TEST(CamProject, ExamplesLoadWithoutWarningsAndRoundTripExactly) {
     EXPECT_EQ(cam_project_xml(again), cam_project_xml(p));
     ++count;
   }
-  EXPECT_EQ(count, 8);
+  EXPECT_EQ(count, 10);
 }
 
 // law="scca" with its fractions b, c, d (b + c + d = 1), kept through a save; the program's
@@ -340,8 +340,9 @@ TEST(CamProject, UnknownNamesAreErrorsNamingLineAndKnownNames) {
   EXPECT_NE(arm.find("unknown attribute 'motion' on <cam>"), std::string::npos) << arm;
   EXPECT_NE(arm.find("unknown attribute 'arm-length' on <cam>"), std::string::npos) << arm;
   const std::string note = error_of(cam(kPlate, kSegments + "<note/>\n"));
-  EXPECT_NE(note.find("cam.xml:5: unknown element <note> in <cam> (known here: segment)"),
-            std::string::npos)
+  EXPECT_NE(
+      note.find("cam.xml:5: unknown element <note> in <cam> (known here: conjugate, segment)"),
+      std::string::npos)
       << note;
 }
 
@@ -353,7 +354,7 @@ TEST(CamProject, LenientReadingWarnsWithTheirLine) {
   ASSERT_EQ(warnings.size(), 2u);
   EXPECT_EQ(warnings[0].substr(0, 56), "cam.xml:2: unknown attribute 'colour' on <cam> ignored (");
   EXPECT_EQ(warnings[1],
-            "cam.xml:5: unknown element <note> in <cam> ignored (known here: segment)");
+            "cam.xml:5: unknown element <note> in <cam> ignored (known here: conjugate, segment)");
 }
 
 // Random corruption of valid projects: every outcome is a project or an InputError.

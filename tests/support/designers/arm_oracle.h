@@ -9,7 +9,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "designers/cam/cam_program.h"
+#include "designers/cam/cam_design.h"
 
 namespace polarform::test {
 
@@ -18,6 +18,19 @@ struct ArmOracle {
   double rb = 0, rr = 0, d = 0, l = 0, f = 0;
   int side = 1, sigma = 1;  // pivot side (+1: +x), sense of rotation (+1: counter-clockwise)
   bool roller = true;
+
+  // The oracle of an oscillating design.
+  static ArmOracle of(const CamDesign& d) {
+    return {make_program(d),
+            d.base_radius,
+            d.follower.roller_radius,
+            d.follower.pivot_distance,
+            d.follower.arm_length,
+            d.follower.face_offset,
+            d.follower.pivot_side,
+            sense(d.rotation),
+            d.follower.kind == FollowerKind::OscillatingRoller};
+  }
 
   static Eigen::Vector2d rotate(const Eigen::Vector2d& v, double angle) {
     return Eigen::Rotation2Dd(angle) * v;
@@ -35,6 +48,12 @@ struct ArmOracle {
   Eigen::Vector2d roller_centre(double theta) const {
     const Eigen::Vector2d p = pivot();
     return p + rotate(Eigen::Vector2d(0, rb + rr) - p, arm_turn(theta));
+  }
+  // A second arm on the same pivot (conjugate cams), turned by gamma (rad, counter-clockwise) from
+  // the first and l2 long: its roller centre.
+  Eigen::Vector2d second_roller_centre(double theta, double gamma, double l2) const {
+    const Eigen::Vector2d p = pivot();
+    return p + rotate(roller_centre(theta) - p, gamma) * (l2 / l);
   }
   // Fixed frame to cam frame at θ: turned back by σθ.
   Eigen::Vector2d to_cam(const Eigen::Vector2d& x, double theta) const {

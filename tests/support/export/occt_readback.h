@@ -11,17 +11,20 @@
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
 #include <Geom_TrimmedCurve.hxx>
+#include <IGESControl_Reader.hxx>
 #include <Interface_Check.hxx>
 #include <Interface_CheckIterator.hxx>
+#include <STEPControl_Reader.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
+#include <Transfer_TransientProcess.hxx>
 #include <XSControl_TransferReader.hxx>
 #include <XSControl_WorkSession.hxx>
-#include <Transfer_TransientProcess.hxx>
 #include <algorithm>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -56,6 +59,47 @@ inline std::vector<TopoDS_Edge> edges_of(const TopoDS_Shape& s) {
 inline std::vector<TopoDS_Face> faces_of(const TopoDS_Shape& s) {
   std::vector<TopoDS_Face> out;
   for (TopExp_Explorer ex(s, TopAbs_FACE); ex.More(); ex.Next()) out.push_back(TopoDS::Face(ex.Current()));
+  return out;
+}
+
+// The shape Open CASCADE transfers from an IGES (.igs) or a STEP (.stp) file, expecting the
+// reader to report no fails.
+inline TopoDS_Shape read_exchange_file(const std::filesystem::path& file) {
+  if (file.extension() == ".igs") {
+    IGESControl_Reader reader;
+    EXPECT_EQ(reader.ReadFile(file.c_str()), IFSelect_RetDone) << file;
+    reader.TransferRoots();
+    EXPECT_EQ(reader_messages(reader.WS(), true), "") << file;
+    return reader.OneShape();
+  }
+  STEPControl_Reader reader;
+  EXPECT_EQ(reader.ReadFile(file.c_str()), IFSelect_RetDone) << file;
+  reader.TransferRoots();
+  EXPECT_EQ(reader_messages(reader.WS(), true), "") << file;
+  return reader.OneShape();
+}
+
+// Each edge's curve sampled at equal parameter steps, `total` points over all edges, as (x, y).
+inline std::vector<std::vector<Eigen::Vector2d>> sampled_edges(const TopoDS_Shape& s, int total) {
+  std::vector<std::vector<Eigen::Vector2d>> out;
+  const std::vector<TopoDS_Edge> edges = edges_of(s);
+  for (const TopoDS_Edge& e : edges) {
+    double a = 0, b = 0;
+    const Handle(Geom_Curve) c = BRep_Tool::Curve(e, a, b);
+    const int n = total / static_cast<int>(edges.size());
+    std::vector<Eigen::Vector2d>& points = out.emplace_back();
+    for (int i = 0; i < n; ++i) {
+      const gp_Pnt q = c->Value(a + (b - a) * i / n);
+      points.emplace_back(q.X(), q.Y());
+    }
+  }
+  return out;
+}
+
+// The same, all edges in the file's order in one list.
+inline std::vector<Eigen::Vector2d> sampled_points(const TopoDS_Shape& s, int total) {
+  std::vector<Eigen::Vector2d> out;
+  for (const auto& edge : sampled_edges(s, total)) out.insert(out.end(), edge.begin(), edge.end());
   return out;
 }
 

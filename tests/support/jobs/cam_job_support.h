@@ -27,8 +27,8 @@ using json = nlohmann::json;
 
 inline const fs::path kExamples = fs::path(POLARFORM_SOURCE_DIR) / "examples" / "cams";
 inline const std::vector<std::string> kExampleNames = {
-    "roller",      "flat_faced",    "offset_roller",      "polynomial",
-    "cylindrical", "scca_dynamics", "oscillating_roller", "oscillating_flat_faced"};
+    "roller",        "flat_faced",         "offset_roller",          "polynomial", "cylindrical",
+    "scca_dynamics", "oscillating_roller", "oscillating_flat_faced", "grooved",    "conjugate"};
 
 // A fresh directory under the system temporary directory (unique per process, since ctest runs
 // tests in parallel processes), removed with its files on destruction.

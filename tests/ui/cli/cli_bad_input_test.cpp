@@ -29,9 +29,8 @@ const std::string kGood =
     "  <conversion tolerance=\"0.001\"/>\n"
     "</polarform>\n";
 
-// kGood with the first occurrence of `from` replaced by `to`.
-std::string edited(const std::string& from, const std::string& to) {
-  std::string xml = kGood;
+// kGood (or `xml`) with the first occurrence of `from` replaced by `to`.
+std::string edited(const std::string& from, const std::string& to, std::string xml = kGood) {
   const auto at = xml.find(from);
   if (at == std::string::npos) throw std::runtime_error("kGood has no '" + from + "'");
   return xml.replace(at, from.size(), to);
@@ -56,7 +55,7 @@ std::vector<BadProject> bad_projects() {
       {"misspelt_units", edited("type=\"plate\"", "type=\"plate\" unit=\"inch\""),
        ":3: unknown attribute 'unit' on <cam> (known here: "},
       {"unknown_element", edited("</cam>", "<follower-arm length=\"100\"/></cam>"),
-       "unknown element <follower-arm> in <cam> (known here: segment)"},
+       "unknown element <follower-arm> in <cam> (known here: conjugate, segment)"},
       {"no_segments",
        "<polarform version=\"1\"><cam follower=\"knife-edge\" base-radius=\"40\"/>"
        "</polarform>\n",
@@ -96,6 +95,27 @@ std::vector<BadProject> bad_projects() {
        ":9: <conversion> attribute 'max-degree': expected an integer, got '2.5'"},
       {"offset_beyond_prime_circle", edited("rpm=\"300\"", "rpm=\"300\" offset=\"60\""),
        "follower offset |e| = 60 mm must be below the prime radius 50 mm"},
+      {"groove_on_a_knife_edge",
+       edited("follower=\"roller\"", "follower=\"knife-edge\" groove-depth=\"8\""),
+       ":3: <cam> attribute 'groove-depth': expected no groove for a knife-edge follower"},
+      {"groove_on_a_flat_face",
+       edited("follower=\"roller\"", "follower=\"flat-faced\" groove-depth=\"8\""),
+       ":3: <cam> attribute 'groove-depth': expected no groove for a flat-faced follower"},
+      {"overlapping_rollers", edited("</cam>", "<conjugate roller-distance=\"15\"/></cam>"),
+       "conjugate roller-distance 15 mm: the rollers overlap"},
+      // y0 + stroke + Rr = 50 + 20 + 10 = 80 mm: the second roller would reach the cam centre.
+      {"second_roller_at_the_centre", edited("</cam>", "<conjugate roller-distance=\"75\"/></cam>"),
+       "conjugate roller-distance 75 mm is too small: the second roller would reach the cam "
+       "centre; the second cam's base radius D − (y0 + stroke) − Rr must be > 0, so D > 80 mm"},
+      {"conjugate_and_groove",
+       edited("rpm=\"300\"", "rpm=\"300\" groove-depth=\"5\"",
+              edited("</cam>", "<conjugate roller-distance=\"120\"/></cam>")),
+       "groove-depth: a grooved cam is already driven both ways"},
+      // A 45° rise: the second cam's pitch curve turns with a radius below the roller's.
+      {"second_cam_undercuts",
+       edited("to=\"180\"", "to=\"135\"",
+              edited("</cam>", "<conjugate roller-distance=\"82\"/></cam>")),
+       "cam conjugate (second) contour is not single-valued in polar angle between θ = "},
   };
 }
 
