@@ -155,14 +155,18 @@ PlateProfile plate_profile(const CamProject& project, const CamConversionStage& 
       warnings.push_back("degree-" + std::to_string(options.limited_degree) +
                          " profile not written: " + e.what());
     }
+  // The capped profile replaces the exact one in the files: at the exact one's tolerance (a
+  // conjugate pair's is tighter).
   if (project.max_degree && p.curve.degree() > *project.max_degree)
     p.capped = approximate_polar_curve(stage.profile_function, *project.max_degree,
-                                       project.conversion.tolerance);
+                                       stage.conversion.tolerance);
   return p;
 }
 
-// The outer flank of a grooved plate cam or the second contour of a conjugate one, if any.
+// The outer flank of a grooved plate cam or the second contour of a conjugate one, if any,
+// converted with `conversion` (the profile's options).
 std::optional<CompanionCurve> companion_curve(const CamProject& project, const PlateCam& cam,
+                                              const ConversionOptions& conversion,
                                               const CamJobOptions& options) {
   const CamDesign& d = project.cam;
   CompanionCurve c;
@@ -175,11 +179,10 @@ std::optional<CompanionCurve> companion_curve(const CamProject& project, const P
   } else {
     return std::nullopt;
   }
-  c.conversion = convert_polar_function(c.function, project.conversion);
+  c.conversion = convert_polar_function(c.function, conversion);
   c.error = measure_error(c.conversion, c.function, options.error_samples);
   if (project.max_degree && c.conversion.curve.degree() > *project.max_degree)
-    c.capped =
-        approximate_polar_curve(c.function, *project.max_degree, project.conversion.tolerance);
+    c.capped = approximate_polar_curve(c.function, *project.max_degree, conversion.tolerance);
   return c;
 }
 
@@ -327,9 +330,10 @@ CamConversionStage convert_cam(const CamDesignStage& design, const CamJobOptions
     // copy at each C0 arc junction, so that readers see one smooth curve.
     ConversionOptions conversion = project.conversion;
     conversion.compaction = Compaction::full;
+    if (project.cam.conjugate) conversion.tolerance *= kConjugateToleranceShare;
     c.conversion = convert_polar_function(c.profile_function, conversion);
     c.profile = plate_profile(project, c, options, c.warnings);
-    c.companion = companion_curve(project, *plate, options);
+    c.companion = companion_curve(project, *plate, conversion, options);
   } else {
     const auto& barrel = std::get<BarrelCam>(design.cam);
     const double offset = track_height_offset(project.cam);

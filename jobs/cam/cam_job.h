@@ -163,8 +163,13 @@ struct CamConversionStage {
   std::size_t knot_count() const;
 };
 
+// A conjugate pair keeps its rollers' centre distance within the tolerance ε: each contour's normal
+// error moves its roller by that error over cos φ, so both contours are converted at this share of
+// ε, which holds for pressure angles up to acos(2 × 0.35) = 45.6°.
+constexpr double kConjugateToleranceShare = 0.35;
+
 // Throws InputError (a tolerance below the converter's floor, …) / NumericalError from the
-// converter.
+// converter. A conjugate pair's contours are converted at kConjugateToleranceShare·ε.
 CamConversionStage convert_cam(const CamDesignStage& design, const CamJobOptions& options = {});
 
 // ---- The whole job -------------------------------------------------------------------------

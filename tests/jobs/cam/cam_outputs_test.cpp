@@ -68,7 +68,10 @@ TEST(CamOutputs, ReportCarriesTheIssueFieldsWithTheJobsNumbers) {
     SCOPED_TRACE(name);
     EXPECT_EQ(j["command"], "cam");
     EXPECT_FALSE(j["polarform_version"].get<std::string>().empty());
-    EXPECT_EQ(j["tolerance_mm"].get<double>(), r.project().conversion.tolerance);
+    // The tolerance the profile was converted at: the project's, a conjugate pair's share of it.
+    EXPECT_EQ(j["tolerance_mm"].get<double>(),
+              r.project().conversion.tolerance *
+                  (r.project().cam.conjugate ? kConjugateToleranceShare : 1.0));
     EXPECT_EQ(j["max_radial_error_mm"].get<double>(),
               report_number(r.conversion.conversion.max_radial_error));
     EXPECT_EQ(j["max_normal_error_mm"].get<double>(),

@@ -172,7 +172,8 @@ TEST(PlateGrooveOcct, GroovePlateFilesCarryBothFlanksWithinTheTolerance) {
     SCOPED_TRACE(file);
     const TopoDS_Shape shape = exchange_test::read_exchange_file(run.dir / file);
     for (const std::vector<Vector2d>& flank : occt_flanks(shape, path)) {
-      ASSERT_GT(flank.size(), 10000u);
+      ASSERT_GT(flank.size(),
+                5000u);  // one edge per flank since the knot removal: half the samples each
       EXPECT_LE(test::envelope_deviation(path, d.follower.roller_radius, flank).worst(), tol);
     }
   }
@@ -209,7 +210,11 @@ TEST(PlateGrooveOcct, TheGroovePlateIsOneValidSolidWithTheGroovesVolume) {
       pi * (disc * disc - bore * bore / 4) * thickness - 2 * rr * length * d.groove_depth;
   GProp_GProps props;
   BRepGProp::VolumeProperties(shape, props, 1e-9);
-  EXPECT_LT(std::abs(props.Mass() - exact) / exact, 1e-5) << props.Mass() << " vs " << exact;
+  // The exported flanks are within ε of the exact ones, and so is the disc's radius (taken from
+  // the outer flank): the volume is within ε times the disc's rim area and both walls' areas.
+  const double tol = run.result.project().conversion.tolerance;
+  const double bound = tol * (2 * pi * disc * thickness + 2 * length * d.groove_depth);
+  EXPECT_LT(std::abs(props.Mass() - exact), bound) << props.Mass() << " vs " << exact;
   RecordProperty("relative volume error", std::to_string(std::abs(props.Mass() - exact) / exact));
 }
 

@@ -652,8 +652,9 @@ TEST_F(StudioTest, EveryExampleShowsAndExportsWhatTheCliWrites) {
     fs::path file;
   };
   std::vector<Example> examples;
-  for (const char* cam : {"roller", "flat_faced", "offset_roller", "polynomial", "cylindrical",
-                          "scca_dynamics", "oscillating_roller", "oscillating_flat_faced"})
+  for (const char* cam :
+       {"roller", "flat_faced", "offset_roller", "polynomial", "cylindrical", "scca_dynamics",
+        "oscillating_roller", "oscillating_flat_faced", "grooved", "conjugate"})
     examples.push_back({"cam", kExamples / "cams" / (std::string(cam) + ".xml")});
   for (const char* vessel : {"hemispherical", "ellipsoidal_2_1", "torispherical_100_6",
                              "custom_curvature", "torispherical_100_6_exact"})
