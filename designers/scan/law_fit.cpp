@@ -34,7 +34,7 @@ class Model {
     if (scca_)
       scca_->derivatives(x, 1, S);
     else
-      standard_law(shape_.law, x, 1, S);
+      law_shape_derivatives(shape_, x, S);
     if (x <= 0.0 || x >= 1.0) S[1] = 0.0;
     if (grad) {
       grad[0] = p_[3] * S[1] * (x - 1.0) / beta;
@@ -95,10 +95,17 @@ void linearise(const LawWindow& w, const LawShape& shape, const Eigen::VectorXd&
 double LawFit::rms() const { return count ? std::sqrt(rss / static_cast<double>(count)) : 0.0; }
 
 void law_shape_derivatives(const LawShape& shape, double x, double* out) {
-  if (shape.law == MotionLaw::Scca)
+  if (shape.law == MotionLaw::Scca) {
     SccaLaw(shape.scca).derivatives(x, 2, out);
-  else
+    return;
+  }
+  if (!shape.reversed) {
     standard_law(shape.law, x, 2, out);
+    return;
+  }
+  standard_law(shape.law, 1 - std::clamp(x, 0.0, 1.0), 2, out);  // 1 − S(1 − x)
+  out[0] = 1 - out[0];
+  out[2] = -out[2];
 }
 
 LawFit fit_law(const LawWindow& w, const LawShape& shape, const LawFit& guess, double noise) {

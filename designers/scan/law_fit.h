@@ -19,10 +19,13 @@ struct LawWindow {
   Eigen::VectorXd height;  // y0 + s, mm
 };
 
-// A law to fit: a standard law, or MotionLaw::Scca with its starting fractions.
+// A law to fit: a standard law, or MotionLaw::Scca with its starting fractions. A return of a law
+// that is not antisymmetric (the double harmonic) runs its rise backwards: the fraction of the
+// lift travelled is 1 − S(1 − x) (normalised_law.h).
 struct LawShape {
   MotionLaw law = MotionLaw::Cycloidal;
-  SccaParameters scca;  // Scca only: the start of the search
+  SccaParameters scca;    // Scca only: the start of the search
+  bool reversed = false;  // 1 − S(1 − x): the return of a law whose rise is not antisymmetric
 };
 
 struct LawFit {

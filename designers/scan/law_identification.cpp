@@ -8,10 +8,10 @@ namespace polarform {
 
 namespace {
 
-constexpr MotionLaw kStandardLaws[] = {MotionLaw::SimpleHarmonic,       MotionLaw::Cycloidal,
-                                       MotionLaw::ModifiedTrapezoid,    MotionLaw::ModifiedSine,
-                                       MotionLaw::Polynomial345,        MotionLaw::Polynomial4567,
-                                       MotionLaw::ConstantAcceleration, MotionLaw::Cubic};
+constexpr MotionLaw kStandardLaws[] = {
+    MotionLaw::SimpleHarmonic,       MotionLaw::Cycloidal,     MotionLaw::ModifiedTrapezoid,
+    MotionLaw::ModifiedSine,         MotionLaw::Polynomial345, MotionLaw::Polynomial4567,
+    MotionLaw::ConstantAcceleration, MotionLaw::Cubic,         MotionLaw::DoubleHarmonic};
 
 // Starting fractions of the SCCA search: the family's named members and its centre.
 constexpr SccaParameters kSccaStarts[] = {{0.25, 0.5, 0.25},
@@ -51,8 +51,10 @@ IdentifiedMotion identify_law(const FollowerSamples& samples, const MotionPiece&
   IdentifiedMotion m;
   const double sigma2 = noise * noise, log_n = std::log(static_cast<double>(w.theta.size()));
   const auto bic = [&](const LawFit& f) { return f.rss / sigma2 + f.parameters * log_n; };
+  const bool returning = guess.lift < 0;  // an asymmetric law returns backwards (law_fit.h)
   for (MotionLaw law : kStandardLaws)
-    m.candidates.push_back(fit_law(w, LawShape{law, {}}, guess, noise));
+    m.candidates.push_back(
+        fit_law(w, LawShape{law, {}, returning && !is_antisymmetric_law(law)}, guess, noise));
   std::size_t best_standard = 0;
   for (std::size_t i = 1; i < m.candidates.size(); ++i)
     if (m.candidates[i].rss < m.candidates[best_standard].rss) best_standard = i;

@@ -1,9 +1,8 @@
 // Law identification of one rise or return of a recovered follower motion: every law polarform
-// knows with a fixed shape and a mirror-symmetric rise — the six standard laws of motion_law.h,
-// constant acceleration and the cubic (double harmonic, whose rise and return differ, is not a
-// candidate yet) — and the SCCA family with
-// free fractions (b, c, d) (scca_law.h) is fitted with free boundary angles, start level and lift
-// (law_fit.h) to the samples of the motion's window, and the law of least Bayesian information
+// knows with a fixed shape — the six standard laws of motion_law.h, constant acceleration, the
+// cubic and the double harmonic (whose return is its rise played backwards) — and the SCCA family
+// with free fractions (b, c, d) (scca_law.h) is fitted with free boundary angles, start level and
+// lift (law_fit.h) to the samples of the motion's window, and the law of least Bayesian information
 // criterion BIC = RSS/σ² + k·ln n is chosen (Schwarz 1978; σ known: the scan's noise), so that
 // SCCA, which holds five of these laws, wins only when its two extra parameters earn their
 // penalty. The data cannot tell the chosen law from another when the other's RSS exceeds
@@ -11,7 +10,8 @@
 // is not listed against the laws it holds (harmonic, cycloidal, the modified ones, constant
 // acceleration).
 // The polynomial and B-spline laws are not candidates: with the zero endpoint derivatives of a
-// rise between dwells, the minimal Hermite polynomials are the 3-4-5 and 4-5-6-7 laws.
+// rise between dwells, the minimal Hermite polynomials are the 3-4-5 and 4-5-6-7 laws; nor is
+// constant velocity, whose blends make it a family like SCCA (not fitted yet).
 #pragma once
 
 #include <vector>

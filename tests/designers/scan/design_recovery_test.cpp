@@ -201,6 +201,28 @@ TEST(DesignRecovery, ExampleCamsGiveBackTheirDesigns) {
   RecordProperty("max_redesign_deviation_mm", std::to_string(worst_redesign));
 }
 
+// The laws beyond the six: a double-harmonic rise and its return (the rise played backwards, not
+// its mirror image), and the cubic and constant-acceleration laws, come back as themselves.
+TEST(DesignRecovery, DoubleHarmonicCubicAndConstantAccelerationAreIdentified) {
+  const MotionLaw pairs[][2] = {{MotionLaw::DoubleHarmonic, MotionLaw::DoubleHarmonic},
+                                {MotionLaw::Cubic, MotionLaw::ConstantAcceleration}};
+  for (const auto& laws : pairs) {
+    CamDesign d = test::example_cam_design("roller");
+    d.segments[1].law = laws[0];
+    d.segments[3].law = laws[1];
+    const PlateCam cam = make_plate_cam(d);
+    const double sigma = 0.004, turn = 0.7;
+    const RecoveredDesign r = recover_design(scan_of(cam, sigma, 8000, turn, 11));
+    Match m;
+    match(cam, turn, r, sigma, m);
+    EXPECT_EQ(m.motions, 2);
+    EXPECT_EQ(m.right_law, 2) << motion_law_name(laws[0]) << ", " << motion_law_name(laws[1]);
+    EXPECT_LT(m.boundary_error, 0.1 * kDeg);
+    EXPECT_LT(m.lift_error, 3.0);
+    EXPECT_LT(redesign_motion_error(cam, turn, r), 3 * sigma);
+  }
+}
+
 TEST(DesignRecovery, RandomDesignsGiveBackLawsBoundariesAndLifts) {
   std::mt19937 rng(2022);
   std::uniform_real_distribution<double> U(0.0, 1.0);

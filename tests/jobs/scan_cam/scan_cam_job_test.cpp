@@ -134,7 +134,7 @@ TEST(ScanCamJob, RecoveredDesignIsReportedAndWrittenAsAProjectThatReproducesTheS
     EXPECT_NEAR(seg["to_deg"].get<double>(), rise ? 150.0 : 330.0, 0.02);
     EXPECT_NEAR(seg["lift_mm"].get<double>(), 20.0, 0.015);  // 3σ
     EXPECT_LT(seg["from_sd_deg"].get<double>(), 0.01);
-    EXPECT_EQ(seg["candidates"].size(), 9u);
+    EXPECT_EQ(seg["candidates"].size(), 10u);
     EXPECT_TRUE(seg["indistinguishable_from"].empty());
   }
   EXPECT_LT(d["redesign_deviation"]["profile_normal_mm"]["max"].get<double>(), 0.015);
