@@ -226,7 +226,8 @@ void PlateCam::curves(const double* s, double theta, int order, Jet* pitch_xy, J
 // σ J Q turned by σ·90°). Flat face: the line X·n = h, n = R(a)(0, 1), h = P·n − f; its envelope in
 // the turning cam touches at h n + (h'/φ') J n, φ' = a' − σ the line's angular rate relative to the
 // cam.
-void PlateCam::oscillating_curves(const Jet& S, Jet* reference_xy, Jet* contact_xy) const {
+void PlateCam::oscillating_curves(const Jet& S, Jet* reference_xy, Jet* contact_xy,
+                                  FaceLine* face) const {
   const int sigma = sense();
   const Jet a = arm_angle(S, swing_sign_), c = cos(a), s = sin(a);
   const double px = pivot_.x(), py = pivot_.y();
@@ -240,9 +241,11 @@ void PlateCam::oscillating_curves(const Jet& S, Jet* reference_xy, Jet* contact_
   const Jet h = (-px) * s + py * c + (-follower_.face_offset);  // n = (−sin a, cos a)
   reference_xy[0] = (-1.0) * (h * s), reference_xy[1] = h * c;
   if (!contact_xy) return;
-  const Jet lambda = h.derivative() / (a.derivative() + double(-sigma));  // h'/φ'
+  const Jet phi_rate = a.derivative() + double(-sigma),
+            lambda = h.derivative() / phi_rate;              // h'/φ'
   contact_xy[0] = (-1.0) * (h * s) + (-1.0) * (lambda * c);  // J n = (−cos a, −sin a)
   contact_xy[1] = h * c + (-1.0) * (lambda * s);
+  if (face) *face = {h, lambda, phi_rate};
 }
 
 // Pressure angle (pressure_angle_from), signed contour speed and the face contact at one sample.
@@ -250,10 +253,10 @@ void PlateCam::oscillating_curves(const Jet& S, Jet* reference_xy, Jet* contact_
 void PlateCam::oscillating_sample(const double* s, CamSample& out) const {
   const int sigma = sense();
   const Jet S = Jet::from(s, 3);
-  const Jet a = arm_angle(S, swing_sign_);
-  const double ca = std::cos(a[0]), sa = std::sin(a[0]);
+  const double a = arm_angle(S, swing_sign_)[0];
   Jet reference[2], contact[2];
-  oscillating_curves(S, reference, contact);
+  FaceLine face;
+  oscillating_curves(S, reference, contact, &face);
   if (follower_.kind == FollowerKind::OscillatingRoller) {
     const Eigen::Vector2d q(reference[0][0], reference[1][0]), dq(reference[0][1], reference[1][1]);
     const Eigen::Vector2d t = dq - sigma * perp(q), w = swing_sign_ * perp(q - pivot_);
@@ -263,17 +266,15 @@ void PlateCam::oscillating_sample(const double* s, CamSample& out) const {
     out.arm_lever = swing_sign_ * cross(x - pivot_, (q - x).normalized());
     return;  // contour speed: the roller's generic |P'|(1 − Rr κ_pitch)
   }
-  const Eigen::Vector2d n(-sa, ca), x(contact[0][0], contact[1][0]);
+  const Eigen::Vector2d n(-std::sin(a), std::cos(a)), x(contact[0][0], contact[1][0]);
   const Eigen::Vector2d w = swing_sign_ * perp(x - pivot_);
   out.pressure_angle = pressure_angle_from(-sigma * perp(n), w.normalized(), sigma);
   out.arm_lever = swing_sign_ * cross(x - pivot_, n);  // the face is pushed along its normal n
   // Support function of the contour against the line angle φ: ρ = h + d²h/dφ², |dX/dθ| = ρ |φ'|.
-  const Jet h = (-pivot_.x()) * sin(a) + pivot_.y() * cos(a) + (-follower_.face_offset);
-  const Jet phi_rate = a.derivative() + double(-sigma);
-  const Jet lambda = h.derivative() / phi_rate;
-  out.contour_speed = (h[0] + lambda[1] / phi_rate[0]) * (-sigma * phi_rate[0]);
+  const double phi_rate = face.phi_rate[0];
+  out.contour_speed = (face.h[0] + face.lambda[1] / phi_rate) * (-sigma * phi_rate);
   // Along J n from the foot of the pivot's perpendicular, positive towards the cam's side.
-  out.face_contact = follower_.pivot_side * (lambda[0] - pivot_.dot(perp(n)));
+  out.face_contact = follower_.pivot_side * (face.lambda[0] - pivot_.dot(perp(n)));
 }
 
 void PlateCam::pitch(double theta, int d, Eigen::Vector2d* out) const {

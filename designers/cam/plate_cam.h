@@ -144,7 +144,13 @@ class PlateCam {
   void place_pivot();          // pivot_ and swing_sign_ of an oscillating follower
   // Oscillating followers: the follower's reference point (roller centre, or the face's foot point
   // of the perpendicular from the origin) and the contact point in the fixed frame, as jets.
-  void oscillating_curves(const Jet& s, Jet* reference_xy, Jet* contact_xy) const;
+  // Flat face: its height h over the cam centre, h' / φ' (the contact along J n) and φ' (the line's
+  // angular rate relative to the cam) into `face` when given.
+  struct FaceLine {
+    Jet h, lambda, phi_rate;
+  };
+  void oscillating_curves(const Jet& s, Jet* reference_xy, Jet* contact_xy,
+                          FaceLine* face = nullptr) const;
   // Oscillating followers at one sample: pressure angle, contour speed and face contact.
   void oscillating_sample(const double* s, CamSample& out) const;
 

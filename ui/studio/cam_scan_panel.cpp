@@ -56,8 +56,7 @@ void CamScanPanel::draw_controls(const std::filesystem::path& scan) {
   }
   if (changed) reset();  // the result was for other settings
   if (task_.busy()) {
-    ImGui::ProgressBar(-1.0f * static_cast<float>(ImGui::GetTime()), ImVec2(-FLT_MIN, 0),
-                       "recovering…");
+    ImGui::TextDisabled("Recovering the cam design…");  // the job reports no progress
     return;
   }
   if (ImGui::Button("Recover the cam design", ImVec2(-FLT_MIN, 0))) start(scan);

@@ -5,24 +5,36 @@
 #include "ui/studio/widgets.h"
 
 namespace polarform::studio {
+namespace {
+
+// A start that holds contact at moderate speeds: 0.5 kg on 10 N/mm with 50 N preload, or an arm of
+// 0.01 kg·m² on 50 N·m/rad with 10 N·m preload (a project needs a mass or inertia > 0).
+FollowerLoad default_load(FollowerKind follower) {
+  FollowerLoad load;
+  if (is_oscillating(follower)) {
+    load.arm = true, load.inertia = 0.01, load.torsion_rate = 50, load.preload_torque = 10;
+  } else {
+    load.mass = 0.5, load.spring_rate = 10, load.preload = 50;
+  }
+  return load;
+}
+
+}  // namespace
 
 bool draw_dynamics_settings(std::optional<FollowerLoad>& load, FollowerKind follower) {
   bool enabled = load.has_value();
   bool changed = false;
   if (ImGui::Checkbox("follower dynamics", &enabled)) {
-    // A start that holds contact at moderate speeds: 0.5 kg on 10 N/mm with 50 N preload, or an
-    // arm of 0.01 kg·m² on 50 N·m/rad with 10 N·m preload.
-    load = enabled ? std::optional<FollowerLoad>(FollowerLoad{}) : std::nullopt;
-    if (load && is_oscillating(follower)) {
-      load->arm = true, load->inertia = 0.01, load->torsion_rate = 50, load->preload_torque = 10;
-    } else if (load) {
-      load->mass = 0.5, load->spring_rate = 10, load->preload = 50;
-    }
+    load = enabled ? std::optional<FollowerLoad>(default_load(follower)) : std::nullopt;
     changed = true;
   }
   if (!load) return changed;
-  if (load->arm != is_oscillating(follower)) {  // the follower changed kind: its load follows
-    load->arm = is_oscillating(follower);
+  if (load->arm != is_oscillating(follower)) {  // the follower changed kind: so does its load
+    const FollowerLoad contact = *load;
+    load = default_load(follower);
+    load->contact_width = contact.contact_width;
+    load->youngs_modulus = contact.youngs_modulus;
+    load->poisson_ratio = contact.poisson_ratio;
     changed = true;
   }
   const float width = ImGui::GetFontSize() * 9;
