@@ -71,6 +71,17 @@ HeadPreset torispherical_80_10(double radius) {
   return {HeadKind::torispherical, 2.0, 1.6 * radius, 0.2 * radius};
 }
 
+// |apex − crown centre| = L and |knuckle centre − crown centre| = L − r, solved for L.
+HeadPreset torispherical_of_depth(double radius, double depth, double knuckle) {
+  if (!(knuckle > 0.0 && knuckle < depth))
+    throw InputError("torispherical head of depth " + to_text(depth) + " mm: knuckle " +
+                     to_text(knuckle) + " mm, expected 0 < knuckle < depth");
+  const double a = radius, h = depth, r = knuckle;
+  // L − a = (a − h)² / (2 (h − r)) >= 0: the crown is never smaller than the radius.
+  return {HeadKind::torispherical, 2.0, (h * h - r * r + (a - r) * (a - r)) / (2 * (h - r)),
+          knuckle};
+}
+
 HeadShape head_shape(const HeadPreset& preset, double radius) {
   if (!(radius > 0.0 && std::isfinite(radius)))
     throw InputError("head preset: radius " + to_text(radius) + " mm, expected > 0");

@@ -31,6 +31,11 @@ struct HeadPreset {
 // (ASME flanged-and-dished, "100 %/6 %"), and crown 0.8 D, knuckle 0.1 D ("80 %/10 %").
 HeadPreset torispherical_100_6(double radius);
 HeadPreset torispherical_80_10(double radius);
+// The torispherical head of a given depth h with knuckle radius r: the crown radius
+// L = (h² − r² + (a − r)²) / (2 (h − r)) that puts the apex at h (a = radius; the knuckle centre
+// (a − r, 0), the crown centre (0, h − L)). L − a = (a − h)²/(2(h − r)) >= 0. Throws InputError
+// unless 0 < knuckle < depth.
+HeadPreset torispherical_of_depth(double radius, double depth, double knuckle);
 
 struct CurvatureJump {
   double theta = 0.0;         // rad

@@ -158,10 +158,46 @@ VesselSolution solve_curvature_design(const VesselDesign& design, const VesselLo
   return out;
 }
 
+// The head of the asked depth with the smallest peak membrane stress, and the standard heads of
+// that depth beside it.
+VesselSolution solve_minimum_stress(const VesselDesign& design, const VesselLoad& load) {
+  if (!design.targets.empty())
+    throw InputError(
+        "vessel: a minimum-stress head takes no curvature targets; ask for design=\"curvature\" "
+        "to synthesise a head from them");
+  if (!design.depth && !design.preset)
+    throw InputError(
+        "vessel: a minimum-stress head needs <head depth> or a preset to take it from");
+  const double depth =
+      design.depth ? *design.depth : head_shape(*design.preset, design.radius).depth;
+  StressOptimalSettings settings;
+  settings.junction_curvature = design.junction_kappa;
+  VesselSolution out;
+  MinimumStressDesign m;
+  m.head = minimum_peak_stress_head(design.radius, depth, settings);
+  out.profile = head_polar_function(m.head.profile);
+  out.curvature = sample_curvature(out.profile, 360);
+  analyse_head(out, load);
+  m.stresses = head_stress_summary("minimum-stress head", out.profile, load);
+  m.same_depth = standard_heads_of_depth(depth, load);
+  out.minimum_stress = std::move(m);
+  if (design.preset) out.preset = compare_with_preset(*design.preset, design, out.profile, load);
+  out.warnings = warnings_for(out, design);
+  return out;
+}
+
 }  // namespace
 
 const char* head_design_name(HeadDesign design) {
-  return design == HeadDesign::exact ? "exact" : "curvature";
+  switch (design) {
+    case HeadDesign::exact:
+      return "exact";
+    case HeadDesign::minimum_stress:
+      return "minimum-stress";
+    case HeadDesign::curvature:
+      break;
+  }
+  return "curvature";
 }
 
 PolarFunction head_polar_function(const BSplineFunction& R) {
@@ -190,16 +226,17 @@ std::vector<CurvatureSample> sample_curvature(const PolarFunction& f, int count)
   return out;
 }
 
-// The head (exact, or synthesised: Bae 2002, §5.2) with its analyses, then the code check and
-// the measures.
+// The head (exact, synthesised: Bae 2002, §5.2, or of minimum peak stress) with its analyses, then
+// the code check and the measures.
 VesselSolution solve_vessel(const VesselDesign& design) {
   check_positive(design.radius, "radius", "mm");
   check_positive(design.length, "length", "mm");
   check_positive(design.thickness, "thickness", "mm");
   check_positive(design.pressure, "pressure", "MPa");
   const VesselLoad load{design.radius, design.length, design.thickness, design.pressure};
-  VesselSolution out = design.head_design == HeadDesign::exact
-                           ? solve_exact_head(design, load)
+  VesselSolution out = design.head_design == HeadDesign::exact ? solve_exact_head(design, load)
+                       : design.head_design == HeadDesign::minimum_stress
+                           ? solve_minimum_stress(design, load)
                            : solve_curvature_design(design, load);
   if (out.exact)
     out.measures = vessel_measures(*design.preset, design.radius, design.length, design.thickness,

@@ -12,17 +12,20 @@
 #include "designers/convert/polar_function.h"
 #include "designers/vessel/curvature_synthesis.h"
 #include "designers/vessel/exact_head.h"
+#include "designers/vessel/head_depth_comparison.h"
 #include "designers/vessel/head_preset.h"
 #include "designers/vessel/membrane_stress.h"
+#include "designers/vessel/stress_optimal_head.h"
 #include "designers/vessel/vessel_code_check.h"
 
 namespace polarform {
 
-// What the head is: synthesised from prescribed curvatures (Bae 2002, §5.2), or the preset head
-// itself, exactly (exact_head.h).
-enum class HeadDesign { curvature, exact };
+// What the head is: synthesised from prescribed curvatures (Bae 2002, §5.2), the preset head
+// itself, exactly (exact_head.h), or the head of a given depth with the smallest peak membrane
+// stress (stress_optimal_head.h).
+enum class HeadDesign { curvature, exact, minimum_stress };
 
-// "curvature", "exact" (the words of the project file).
+// "curvature", "exact", "minimum-stress" (the words of the project file).
 const char* head_design_name(HeadDesign design);
 
 struct VesselDesign {
@@ -41,6 +44,10 @@ struct VesselDesign {
   // exact: the preset head itself (needs a preset and no targets; end conditions and synthesis
   // settings are not used).
   HeadDesign head_design = HeadDesign::curvature;
+  // minimum_stress: the head's depth, mm (absent: the preset's depth), and its meridian's
+  // curvature at the junctions, 1/mm (absent: free; 0: curvature-continuous with the cylinder).
+  std::optional<double> depth;
+  std::optional<double> junction_kappa;
   std::optional<CodeInputs> code;  // check the wall by ASME VIII-1 (vessel_code_check.h)
   double density = 7850.0;         // kg/m³ of the wall material (steel), for the weight
 
@@ -61,9 +68,17 @@ struct PresetComparison {
   StressProfile stresses;        // of the preset head
 };
 
+// A minimum-stress head with the standard heads of its depth under the same load.
+struct MinimumStressDesign {
+  StressOptimalHead head;
+  HeadStressSummary stresses;  // of the designed head, at the exact extrema
+  DepthComparison same_depth;
+};
+
 struct VesselSolution {
-  SynthesisResult synthesis;       // empty for an exact head
+  SynthesisResult synthesis;       // empty for an exact or minimum-stress head
   std::optional<ExactHead> exact;  // the exact head (HeadDesign::exact)
+  std::optional<MinimumStressDesign> minimum_stress;  // HeadDesign::minimum_stress
   // R(θ) on [0, π] for the converter: exact = synthesis.profile; π/2 is a breakpoint so that the
   // apex, where vessel_surfaces splits the converted curve, is an arc junction.
   PolarFunction profile;
@@ -83,7 +98,8 @@ struct VesselSolution {
 };
 
 // Throws InputError for a bad design (radius, length, thickness, pressure <= 0, no targets and no
-// preset, an exact head without a preset or with targets, preset_targets < 1, and whatever
+// preset, an exact head without a preset or with targets, a minimum-stress head with targets or
+// without a depth or preset, preset_targets < 1, and whatever
 // synthesize_profile and head_shape reject) and passes on the synthesis's NumericalError.
 VesselSolution solve_vessel(const VesselDesign& design);
 

@@ -72,17 +72,34 @@ EndCondition read_end(const XmlElementReader& r, double radius) {
 }
 
 // `curvature_inputs`: the vessel has <curvature>, <end> or <synthesis> elements, which ask for a
-// curvature design unless design="exact" says otherwise; `has_curvatures`: it has <curvature>
-// elements, which an exact head refuses.
-HeadPreset read_head(const XmlElementReader& r, double radius, int& targets, bool curvature_inputs,
-                     bool has_curvatures, HeadDesign& design) {
+// curvature design unless design="exact" or "minimum-stress" says otherwise; `has_curvatures`: it
+// has <curvature> elements, which an exact or minimum-stress head refuses. Sets d.head_design,
+// d.preset (absent only for a minimum-stress head), d.depth, d.junction_kappa, d.preset_targets.
+void read_head(const XmlElementReader& r, VesselDesign& d, bool curvature_inputs,
+               bool has_curvatures) {
   const bool synthesised = curvature_inputs || r.has("targets");
-  design =
-      r.choice("design", {"exact", "curvature"}, synthesised ? "curvature" : "exact") == "exact"
-          ? HeadDesign::exact
-          : HeadDesign::curvature;
-  if (design == HeadDesign::exact && has_curvatures)
-    r.fail("design", "design=\"curvature\" with <curvature> targets (an exact head takes none)");
+  const std::string design = r.choice("design", {"exact", "curvature", "minimum-stress"},
+                                      synthesised ? "curvature" : "exact");
+  d.head_design = design == "exact"            ? HeadDesign::exact
+                  : design == "minimum-stress" ? HeadDesign::minimum_stress
+                                               : HeadDesign::curvature;
+  if (d.head_design != HeadDesign::curvature && has_curvatures)
+    r.fail("design",
+           "design=\"curvature\" with <curvature> targets (an " + design + " head takes none)");
+  if (d.head_design == HeadDesign::minimum_stress) {
+    if (r.has("depth")) d.depth = r.positive("depth");
+    if (d.depth && !(*d.depth <= 4 * d.radius))
+      r.fail("depth", "a head depth up to 4 × the vessel radius " + number(4 * d.radius) + " mm");
+    d.junction_kappa = r.optional_number("junction-kappa");
+    if (!r.has("preset")) {
+      if (!d.depth) r.fail("depth", "the head's depth (or a preset to take it from)");
+      return;
+    }
+  } else {
+    for (const char* name : {"depth", "junction-kappa"})
+      if (r.has(name))
+        r.fail(name, std::string("no ") + name + " unless design=\"minimum-stress\"");
+  }
   HeadPreset h;
   const std::string preset = r.choice("preset", {"hemispherical", "ellipsoidal", "torispherical"});
   if (preset == "ellipsoidal") {
@@ -92,16 +109,16 @@ HeadPreset read_head(const XmlElementReader& r, double radius, int& targets, boo
     h.kind = HeadKind::torispherical;
     h.crown = r.positive("crown");
     h.knuckle = r.positive("knuckle");
-    if (!(h.knuckle < radius))
-      r.fail("knuckle", "a knuckle radius below the vessel radius " + number(radius) + " mm");
-    if (!(h.crown >= radius))
-      r.fail("crown", "a crown radius at least the vessel radius " + number(radius) + " mm");
+    if (!(h.knuckle < d.radius))
+      r.fail("knuckle", "a knuckle radius below the vessel radius " + number(d.radius) + " mm");
+    if (!(h.crown >= d.radius))
+      r.fail("crown", "a crown radius at least the vessel radius " + number(d.radius) + " mm");
   }
-  targets = r.integer("targets", targets);
-  if (targets < 1 || targets > kMaxCurvatureTargets)
+  d.preset_targets = r.integer("targets", d.preset_targets);
+  if (d.preset_targets < 1 || d.preset_targets > kMaxCurvatureTargets)
     r.fail("targets",
            "a number of curvature targets in [1, " + std::to_string(kMaxCurvatureTargets) + "]");
-  return h;
+  d.preset = h;
 }
 
 // <code allowable-stress="MPa" joint-efficiency="1" corrosion-allowance="mm"/>: ASME VIII-1.
@@ -145,6 +162,8 @@ void to_millimetres(VesselProject& p, double unit) {
     d.preset->crown *= unit;
     d.preset->knuckle *= unit;
   }
+  if (d.depth) *d.depth *= unit;
+  if (d.junction_kappa) *d.junction_kappa /= unit;
 }
 
 // The <vessel> element; `root` is the <polarform> root (null when <vessel> is the root), whose
@@ -188,11 +207,11 @@ double read_vessel(const XMLElement* e, const XmlElementReader* root, Reader& re
       });
     const bool curvature_inputs =
         !curvatures.empty() || !r.children("end").empty() || !r.children("synthesis").empty();
-    for (const XMLElement* h : r.children("head"))
+    const std::vector<const XMLElement*> heads = r.children("head");
+    for (const XMLElement* h : heads)
       reader.visit(h, [&](const XmlElementReader& hr) {
-        if (d.preset) throw InputError(hr.where() + ": expected one <head> per vessel");
-        d.preset = read_head(hr, d.radius, d.preset_targets, curvature_inputs, !curvatures.empty(),
-                             d.head_design);
+        if (h != heads.front()) throw InputError(hr.where() + ": expected one <head> per vessel");
+        read_head(hr, d, curvature_inputs, !curvatures.empty());
       });
     const std::vector<const XMLElement*> codes = r.children("code");
     for (const XMLElement* c : codes)
@@ -207,7 +226,7 @@ double read_vessel(const XMLElement* e, const XmlElementReader* root, Reader& re
           throw InputError(sr.where() + ": expected one <synthesis> per vessel");
         d.synthesis = read_synthesis(sr);
       });
-    if (p.curvatures.empty() && !d.preset)
+    if (p.curvatures.empty() && !d.preset && d.head_design != HeadDesign::minimum_stress)
       throw InputError(r.where() + ": expected <curvature> elements or a <head preset>");
   });
   to_millimetres(p, unit);
@@ -304,16 +323,19 @@ std::string vessel_project_xml(const VesselProject& p) {
     if ((*end)->ddr) attribute(out, "ddr", *(*end)->ddr);
     out << "/>\n";
   }
-  if (d.preset) {
+  if (d.preset || d.head_design == HeadDesign::minimum_stress) {
     out << "    <head";
-    attribute(out, "preset", std::string(head_kind_name(d.preset->kind)));
+    if (d.preset) attribute(out, "preset", std::string(head_kind_name(d.preset->kind)));
     attribute(out, "design", std::string(head_design_name(d.head_design)));
-    if (d.preset->kind == HeadKind::ellipsoidal) attribute(out, "ratio", d.preset->ratio);
-    if (d.preset->kind == HeadKind::torispherical) {
+    if (d.preset && d.preset->kind == HeadKind::ellipsoidal)
+      attribute(out, "ratio", d.preset->ratio);
+    if (d.preset && d.preset->kind == HeadKind::torispherical) {
       attribute(out, "crown", d.preset->crown);
       attribute(out, "knuckle", d.preset->knuckle);
     }
-    attribute(out, "targets", std::to_string(d.preset_targets));
+    if (d.preset) attribute(out, "targets", std::to_string(d.preset_targets));
+    if (d.depth) attribute(out, "depth", *d.depth);
+    if (d.junction_kappa) attribute(out, "junction-kappa", *d.junction_kappa);
     out << "/>\n";
   }
   const SynthesisSettings& s = d.synthesis;

@@ -60,6 +60,13 @@ std::string stress_csv(const StressProfile& p) {
   return csv.str();
 }
 
+// The designed head first, then the standard heads of its depth.
+std::vector<const HeadStressSummary*> same_depth_rows(const MinimumStressDesign& m) {
+  std::vector<const HeadStressSummary*> rows{&m.stresses};
+  for (const HeadStressSummary& h : m.same_depth.references) rows.push_back(&h);
+  return rows;
+}
+
 std::string micrometres(double mm) { return format_trimmed(mm * 1e3, 4) + " µm"; }
 
 std::string html_report(const VesselJobResult& r, const VesselOutputOptions& o, const json& report,
@@ -71,6 +78,14 @@ std::string html_report(const VesselJobResult& r, const VesselOutputOptions& o, 
   std::vector<std::pair<std::string, std::string>> key;
   if (s.exact) {
     key.emplace_back("head", s.exact->shape.name + ", exact");
+  } else if (s.minimum_stress) {
+    const json& m = report["minimum_stress"];
+    key.emplace_back("head", "minimum peak membrane stress for its depth");
+    key.emplace_back("peak membrane stress",
+                     format_trimmed(s.minimum_stress->stresses.peak_stress, 4) + " MPa");
+    key.emplace_back("below the best standard head of its depth",
+                     format_trimmed(m["peak_below_best_standard_pct"].get<double>(), 3) + " %");
+    key.emplace_back("iterations", std::to_string(s.minimum_stress->head.iterations));
   } else {
     key.emplace_back("iterations", std::to_string(s.synthesis.iterations));
     key.emplace_back(
@@ -141,6 +156,22 @@ std::string html_report(const VesselJobResult& r, const VesselOutputOptions& o, 
                        format_trimmed(s.preset->max_deviation, 4) + " mm at θ = " +
                        format_trimmed(s.preset->deviation_angle * kDegreesPerRadian, 3) +
                        "°; preset depth " + format_trimmed(s.preset->shape.depth, 3) + " mm.");
+  if (s.minimum_stress) {
+    html.add_heading("Heads of the same depth");
+    html.add_svg(svgs.at("same_depth.svg"),
+                 "Hoop and meridional membrane stresses of the minimum-stress head (solid) and the "
+                 "standard heads of its depth (dashed), junction to apex.");
+    std::vector<std::vector<std::string>> rows;
+    for (const HeadStressSummary* h : same_depth_rows(*s.minimum_stress))
+      rows.push_back({h->name, format_trimmed(h->peak_stress, 5),
+                      format_trimmed(h->peak_theta * kDegreesPerRadian, 4),
+                      format_trimmed(h->min_hoop_stress, 5), format_trimmed(h->max_hoop_stress, 5),
+                      number_text(h->junction_curvature)});
+    html.add_table({"head", "peak |σ| [MPa]", "at θ [deg]", "min σθ [MPa]", "max σθ [MPa]",
+                    "junction κ [1/mm]"},
+                   rows);
+    for (const std::string& m : s.minimum_stress->same_depth.missing) html.add_paragraph(m);
+  }
   html.add_heading("Membrane stresses");
   html.add_svg(svgs.at("stress.svg"),
                "Meridional σφ and hoop σθ along the meridian; shaded: compressive hoop stress.");
@@ -206,10 +237,12 @@ std::map<std::string, std::string> render_vessel_outputs(const VesselJobResult& 
 
   content["profile.csv"] = profile_csv(r.solved);
   content["stress.csv"] = stress_csv(r.solved.solution.stresses);
-  const std::map<std::string, std::string> svgs = {
+  std::map<std::string, std::string> svgs = {
       {"curvature.svg", svg_document(curvature_figure(r.solved))},
       {"stress.svg", svg_document(stress_figure(r.solved))},
       {"profile.svg", svg_document(profile_figure(r.solved, &r.converted))}};
+  if (r.solved.solution.minimum_stress)
+    svgs["same_depth.svg"] = svg_document(same_depth_figure(r.solved));
   content.insert(svgs.begin(), svgs.end());
   const std::vector<std::string> files = report_file_list(content);
   const json report = vessel_report_json(r, files);

@@ -70,7 +70,10 @@ Series meridian_series(std::string label, const PolarFunction& f, int count, Ser
 Figure curvature_figure(const VesselSolveStage& r) {
   const VesselSolution& s = r.solution;
   Figure f(900, 680);
-  f.title = "Curvature along the head: prescribed targets and the synthesised profile";
+  const bool synthesised = r.design.head_design == HeadDesign::curvature;
+  f.title = synthesised ? "Curvature along the head: prescribed targets and the synthesised profile"
+            : s.exact   ? "Curvature along the exact head"
+                        : "Curvature along the minimum-stress head";
   f.shared_x = true;
   Plot& kappa = f.add_panel();
   kappa.x_label = "polar angle θ [deg]";
@@ -84,7 +87,9 @@ Figure curvature_figure(const VesselSolveStage& r) {
       kappa.add_vertical_line(s.preset->shape.jumps[i].theta * kDegreesPerRadian,
                               i == 0 ? "preset curvature jumps" : "", kFlagColor);
   }
-  kappa.add(curvature_series("synthesised κ(θ)", s.curvature, Series::Style::line, kDesignColor));
+  kappa.add(curvature_series(synthesised ? "synthesised κ(θ)" : "κ(θ)", s.curvature,
+                             Series::Style::line, kDesignColor));
+  if (!synthesised) return f;
   Series targets{"targets κ_k", {}, {}, Series::Style::markers, "#009e73"};
   Series residuals{"", {}, {}, Series::Style::markers, "#009e73"};
   for (const TargetResidual& t : s.synthesis.targets) {
@@ -123,6 +128,41 @@ Figure stress_figure(const VesselSolveStage& r) {
   mark_compressive_ranges(plot, s.stresses, false);
   plot.add_horizontal_line(0.0);
   plot.add_vertical_line(0.0, "junction A");
+  return f;
+}
+
+Figure same_depth_figure(const VesselSolveStage& r) {
+  const MinimumStressDesign& m = *r.solution.minimum_stress;
+  Figure f(900, 680);
+  f.title = "Heads of depth " + format_trimmed(r.solution.depth, 4) + " mm at " +
+            format_trimmed(r.design.pressure, 3) + " MPa, wall " +
+            format_trimmed(r.design.thickness, 3) + " mm";
+  f.shared_x = true;
+  const char* colors[] = {"#56b4e9", "#e69f00", "#cc79a7"};
+  for (const bool hoop : {true, false}) {
+    Plot& plot = f.add_panel();
+    plot.x_label = "polar angle θ [deg] (junction at 0, apex at 90)";
+    plot.y_label = hoop ? "hoop stress σθ [MPa]" : "meridional stress σφ [MPa]";
+    plot.x_range = AxisRange{0, 90};
+    plot.x_tick_step = 15;
+    const auto series = [&](const HeadStressSummary& h, Series::Style style, std::string color) {
+      Series out{h.name + ", peak |σ| " + format_trimmed(h.peak_stress, 4) + " MPa",
+                 {},
+                 {},
+                 style,
+                 std::move(color)};
+      if (!hoop) out.label.clear();  // one legend, on the hoop panel
+      for (const StressSample& k : h.stresses.samples)
+        if (!k.on_cylinder)
+          out.x.push_back(k.theta * kDegreesPerRadian),
+              out.y.push_back(hoop ? k.hoop_stress : k.meridional_stress);
+      return out;
+    };
+    for (std::size_t i = 0; i < m.same_depth.references.size(); ++i)
+      plot.add(series(m.same_depth.references[i], Series::Style::dashed, colors[i % 3]));
+    plot.add(series(m.stresses, Series::Style::line, kDesignColor));
+    plot.add_horizontal_line(0.0);
+  }
   return f;
 }
 

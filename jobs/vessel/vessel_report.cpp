@@ -114,6 +114,39 @@ json synthesis_json(const VesselSolveStage& r) {
           {"min_radius_at_deg", s.min_radius_angle * kDegreesPerRadian}};
 }
 
+json head_stresses_json(const HeadStressSummary& h) {
+  return {{"name", h.name},
+          {"depth_mm", h.depth},
+          {"peak_stress_mpa", h.peak_stress},
+          {"peak_at_deg", h.peak_theta * kDegreesPerRadian},
+          {"max_hoop_stress_mpa", h.max_hoop_stress},
+          {"min_hoop_stress_mpa", h.min_hoop_stress},
+          {"max_meridional_stress_mpa", h.max_meridional_stress},
+          {"junction_curvature_per_mm", h.junction_curvature}};
+}
+
+// The minimum-stress head (stress_optimal_head.h) and the standard heads of its depth.
+json minimum_stress_json(const VesselDesign& d, const MinimumStressDesign& m) {
+  const StressOptimalSettings settings;
+  json same_depth = json::array();
+  double best = 0.0;
+  for (const HeadStressSummary& h : m.same_depth.references) {
+    same_depth.push_back(head_stresses_json(h));
+    best = same_depth.size() == 1 ? h.peak_stress : std::min(best, h.peak_stress);
+  }
+  return {{"degree", settings.degree},
+          {"ordinates", settings.ordinates},
+          {"samples", settings.samples},
+          {"junction_curvature_per_mm", d.junction_kappa ? json(*d.junction_kappa) : json(nullptr)},
+          {"iterations", m.head.iterations},
+          {"termination", m.head.termination},
+          {"sampled_peak_stress_mpa", m.head.peak_radius * d.pressure / d.thickness},
+          {"head", head_stresses_json(m.stresses)},
+          {"same_depth", same_depth},
+          {"same_depth_missing", m.same_depth.missing},
+          {"peak_below_best_standard_pct", 100 * (1 - m.stresses.peak_stress / best)}};
+}
+
 json code_check_json(const CodeCheck& c) {
   return {{"required_thickness_mm", c.required_thickness},
           {"thickness_formula", c.thickness_formula},
@@ -151,7 +184,9 @@ json vessel_report_fields(const VesselSolveStage& r, const VesselConversionStage
                  {"length_mm", d.length},
                  {"thickness_mm", d.thickness},
                  {"pressure_mpa", d.pressure}};
-  j["synthesis"] = s.exact ? json(nullptr) : synthesis_json(r);
+  j["synthesis"] = d.head_design == HeadDesign::curvature ? synthesis_json(r) : json(nullptr);
+  j["minimum_stress"] =
+      s.minimum_stress ? minimum_stress_json(d, *s.minimum_stress) : json(nullptr);
   j["targets"] = json::array();
   for (const TargetResidual& t : s.synthesis.targets)
     j["targets"].push_back({{"theta_deg", t.theta * kDegreesPerRadian},

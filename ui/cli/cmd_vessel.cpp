@@ -54,6 +54,13 @@ void run(const VesselArgs& a) {
   const VesselConversionStage& c = r.converted;
   if (solution.exact) {
     std::printf("head: %s, exact (rational quadratic arcs)\n", solution.exact->shape.name.c_str());
+  } else if (const auto& m = solution.minimum_stress) {
+    std::printf("minimum-stress head: peak membrane stress %.5g MPa (%d iterations, %s)\n",
+                m->stresses.peak_stress, m->head.iterations, m->head.termination.c_str());
+    for (const HeadStressSummary& h : m->same_depth.references)
+      std::printf("  same depth: %s: peak %.5g MPa\n", h.name.c_str(), h.peak_stress);
+    std::printf("  %.3g %% below the best standard head of its depth\n",
+                report["minimum_stress"]["peak_below_best_standard_pct"].get<double>());
   } else {
     const SynthesisResult& s = solution.synthesis;
     std::printf(
@@ -97,11 +104,14 @@ void add_vessel_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "vessel",
       "Design a pressure-vessel head: a standard head (hemispherical, ellipsoidal or\n"
-      "torispherical) exactly, as rational quadratic arcs, or a head synthesised from prescribed\n"
-      "curvatures under end conditions and converted to an exact NURBS profile within the\n"
-      "tolerance; revolve it and compute the membrane stresses under the internal pressure. Writes "
+      "torispherical) exactly, as rational quadratic arcs, a head synthesised from prescribed\n"
+      "curvatures under end conditions, or the head of a given depth with the smallest peak\n"
+      "membrane stress (compared with the standard heads of that depth), converted to an exact\n"
+      "NURBS profile within the tolerance; revolve it and compute the membrane stresses under the "
+      "internal pressure. Writes "
       "profile.igs/.stp/.dxf, head.igs/.stp, vessel.stp,\n"
-      "curvature.svg, stress.svg, profile.svg, profile.csv, stress.csv, report.json and\n"
+      "curvature.svg, stress.svg, profile.svg (same_depth.svg), profile.csv, stress.csv, "
+      "report.json and\n"
       "report.html (docs/cli-vessel.md).\n"
       "Exit code 2: bad input (file, field or infeasible design); 1: the synthesis did not\n"
       "converge.");

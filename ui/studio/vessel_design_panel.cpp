@@ -2,6 +2,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <array>
 #include <string_view>
 
@@ -44,11 +45,13 @@ bool VesselDesignPanel::draw(VesselProject& p) {
   changed |= drag_number("pressure [MPa]", d.pressure, 0.01, 0.0, 1e4, "%.3f");
   section("Head preset");
   changed |= draw_preset(d);
-  // An exact head is the preset itself: the synthesis's settings do not apply to it.
-  const bool exact = d.preset && d.head_design == HeadDesign::exact;
+  section("Head design");
+  changed |= draw_design(d);
+  // Only a synthesised head uses the end conditions and the synthesis's settings.
+  const bool synthesised = d.head_design == HeadDesign::curvature;
   section("End conditions");
-  if (exact) ImGui::TextDisabled("not used by an exact head");
-  ImGui::BeginDisabled(exact);
+  if (!synthesised) ImGui::TextDisabled("not used by an %s head", head_design_name(d.head_design));
+  ImGui::BeginDisabled(!synthesised);
   changed |= draw_end("junction A (θ = 0°)", d.end_a, d.radius);
   changed |= draw_end("junction B (θ = 180°)", d.end_b, d.radius);
   section("Synthesis");
@@ -92,20 +95,41 @@ bool VesselDesignPanel::draw_preset(VesselDesign& d) {
       changed = true;
     }
   }
-  static constexpr std::array<std::string_view, 2> kDesigns = {"curvature", "exact"};
-  int design = d.head_design == HeadDesign::exact ? 1 : 0;
-  if (combo("design", design, kDesigns)) {
-    d.head_design = design == 1 ? HeadDesign::exact : HeadDesign::curvature;
-    changed = true;
-  }
-  help_marker(
-      "exact: the preset head itself, as rational quadratic arcs (degree 2). curvature: a head "
-      "synthesised from curvature targets under the end conditions.");
-  if (d.head_design == HeadDesign::exact) return changed;
+  if (d.head_design != HeadDesign::curvature) return changed;
   changed |= input_int("sampled targets", d.preset_targets, 1, 2000);
   help_marker(
       "Without curvature targets the synthesis fits this many samples of the preset's curvature; "
       "with targets the preset is only compared.");
+  return changed;
+}
+
+bool VesselDesignPanel::draw_design(VesselDesign& d) {
+  bool changed = false;
+  static constexpr std::array<std::string_view, 3> kDesigns = {"curvature", "exact",
+                                                               "minimum-stress"};
+  static constexpr std::array<HeadDesign, 3> kValues = {HeadDesign::curvature, HeadDesign::exact,
+                                                        HeadDesign::minimum_stress};
+  int design =
+      static_cast<int>(std::find(kValues.begin(), kValues.end(), d.head_design) - kValues.begin());
+  if (combo("design", design, kDesigns)) {
+    d.head_design = kValues[design];
+    if (d.head_design == HeadDesign::minimum_stress && !d.preset && !d.depth)
+      d.depth = d.radius / 2;  // the 2:1 depth: a minimum-stress head needs one
+    changed = true;
+  }
+  help_marker(
+      "exact: the preset head itself, as rational quadratic arcs (degree 2). curvature: a head "
+      "synthesised from curvature targets under the end conditions. minimum-stress: the head of "
+      "the depth below (or the preset's) with the smallest peak membrane stress, compared with "
+      "the standard heads of that depth.");
+  if (d.head_design != HeadDesign::minimum_stress) return changed;
+  const double preset_depth = d.preset ? head_shape(*d.preset, d.radius).depth : d.radius / 2;
+  changed |= optional_value("depth [mm]", d.depth, preset_depth);
+  help_marker("Unchecked: the preset's depth.");
+  changed |= optional_value("junction κ [1/mm]", d.junction_kappa, 0.0);
+  help_marker(
+      "The meridian's curvature where it meets the cylinder; unchecked: free, chosen by "
+      "the optimiser; 0: curvature-continuous with the cylinder.");
   return changed;
 }
 

@@ -14,6 +14,7 @@ class VesselDesignPanel {
 
  private:
   bool draw_preset(VesselDesign& design);
+  bool draw_design(VesselDesign& design);  // curvature, exact or minimum-stress, with its inputs
   bool draw_end(const char* title, std::optional<EndCondition>& end, double radius);
   bool draw_synthesis(SynthesisSettings& settings);
 };

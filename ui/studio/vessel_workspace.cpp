@@ -29,7 +29,8 @@ constexpr float kHeadRgb[3] = {0.85f, 0.62f, 0.38f};
 // The vessel job's stages for the edited project: the solve, then the conversion — whose failure
 // is kept as a message, so the solve still shows — with the report's fields and the figures.
 VesselRun run_stages(const VesselProject& project) {
-  VesselRun run{solve_vessel_head(project), std::nullopt, {}, {}, Figure(), Figure(), Figure()};
+  VesselRun run{
+      solve_vessel_head(project), std::nullopt, {}, {}, Figure(), Figure(), Figure(), std::nullopt};
   try {
     run.converted = convert_vessel_head(run.solved);
   } catch (...) {
@@ -40,6 +41,7 @@ VesselRun run_stages(const VesselProject& project) {
   run.meridian = profile_figure(run.solved, converted);
   run.curvature = curvature_figure(run.solved);
   run.stresses = stress_figure(run.solved);
+  if (run.solved.solution.minimum_stress) run.same_depth = same_depth_figure(run.solved);
   return run;
 }
 
@@ -140,7 +142,7 @@ void VesselWorkspace::draw_editor() {
 }
 
 void VesselWorkspace::draw_summary() {
-  section("Synthesis result");
+  section("Head result");
   if (task_.busy()) ImGui::TextColored(ImVec4(0.1f, 0.4f, 0.8f, 1), "solving…");
   if (!error_.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, color::error);
@@ -154,6 +156,19 @@ void VesselWorkspace::draw_summary() {
   if (const auto& exact = results_->solved.solution.exact) {
     ImGui::Text("%s, exact: rational quadratic arcs, no synthesis", exact->shape.name.c_str());
     ImGui::Text("depth %s mm", field(f, "head", "depth_mm").c_str());
+  } else if (results_->solved.solution.minimum_stress) {
+    const nlohmann::ordered_json& m = f.at("minimum_stress");
+    ImGui::Text("minimum peak stress for depth %s mm", field(f, "head", "depth_mm").c_str());
+    ImGui::Text("NLopt: %s evaluations, %s (%s s)", m.at("iterations").dump().c_str(),
+                m.at("termination").get<std::string>().c_str(),
+                number_text(solve_seconds_).c_str());
+    ImGui::Text("peak |σ| %s MPa",
+                number_text(m.at("head").at("peak_stress_mpa").get<double>()).c_str());
+    for (const auto& h : m.at("same_depth"))
+      ImGui::BulletText("%s: %s MPa", h.at("name").get<std::string>().c_str(),
+                        number_text(h.at("peak_stress_mpa").get<double>()).c_str());
+    ImGui::Text("%s %% below the best standard head of this depth",
+                number_text(m.at("peak_below_best_standard_pct").get<double>()).c_str());
   } else {
     const SynthesisResult& s = results_->solved.solution.synthesis;
     ImGui::Text("%d targets, %d unknowns, %d free parameters", static_cast<int>(s.targets.size()),
@@ -215,7 +230,16 @@ void VesselWorkspace::draw_views() {
   ImGui::EndGroup();
   ImGui::SameLine();
   ImGui::BeginGroup();
-  draw_figure("stresses", results_->stresses, stress_view_, cell);
+  if (results_->same_depth) {
+    ImGui::Checkbox("heads of the same depth", &show_same_depth_);
+    const ImVec2 rest(cell.x, cell.y - ImGui::GetFrameHeightWithSpacing());
+    if (show_same_depth_)
+      draw_figure("same depth", *results_->same_depth, same_depth_view_, rest);
+    else
+      draw_figure("stresses", results_->stresses, stress_view_, rest);
+  } else {
+    draw_figure("stresses", results_->stresses, stress_view_, cell);
+  }
   ImGui::EndGroup();
 }
 

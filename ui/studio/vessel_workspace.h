@@ -29,6 +29,7 @@ struct VesselRun {
   std::string conversion_error;
   nlohmann::ordered_json fields;  // vessel_report_fields of the stages
   Figure meridian, curvature, stresses;
+  std::optional<Figure> same_depth;  // a minimum-stress head beside the standard heads of its depth
 };
 
 class VesselWorkspace : public Workspace {
@@ -79,7 +80,8 @@ class VesselWorkspace : public Workspace {
   double bench_pressure_ = 0.0;
   VesselDesignPanel design_panel_;
   CurvatureTable curvature_table_;
-  FigureView meridian_view_, curvature_view_, stress_view_;
+  FigureView meridian_view_, curvature_view_, stress_view_, same_depth_view_;
+  bool show_same_depth_ = true;  // a minimum-stress head: the comparison in the stresses cell
   SceneView scene_;
   bool scene_dirty_ = false;
   bool has_document_ = false;

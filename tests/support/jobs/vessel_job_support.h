@@ -21,9 +21,9 @@ inline std::filesystem::path example(const std::string& name) {
 }
 
 inline const std::vector<std::string>& example_names() {
-  static const std::vector<std::string> names = {"hemispherical.xml", "ellipsoidal_2_1.xml",
-                                                 "torispherical_100_6.xml", "custom_curvature.xml",
-                                                 "torispherical_100_6_exact.xml"};
+  static const std::vector<std::string> names = {
+      "hemispherical.xml",    "ellipsoidal_2_1.xml",           "torispherical_100_6.xml",
+      "custom_curvature.xml", "torispherical_100_6_exact.xml", "minimum_stress_2_1_depth.xml"};
   return names;
 }
 

@@ -92,8 +92,9 @@ std::vector<ExampleRun> every_example() {
   std::vector<ExampleRun> runs;
   for (const std::string& cam : kExampleNames)
     runs.push_back({"cam " + cam, {"cam", (examples / "cams" / (cam + ".xml")).string()}});
-  for (const char* vessel : {"hemispherical", "ellipsoidal_2_1", "torispherical_100_6",
-                             "custom_curvature", "torispherical_100_6_exact"})
+  for (const char* vessel :
+       {"hemispherical", "ellipsoidal_2_1", "torispherical_100_6", "custom_curvature",
+        "torispherical_100_6_exact", "minimum_stress_2_1_depth"})
     runs.push_back({std::string("vessel ") + vessel,
                     {"vessel", (examples / "vessels" / (std::string(vessel) + ".xml")).string()}});
   for (const char* scan : {"sphere_like_fit.xml", "lobed_profile_fit.xml", "sphere_like.xyz",

@@ -656,8 +656,9 @@ TEST_F(StudioTest, EveryExampleShowsAndExportsWhatTheCliWrites) {
        {"roller", "flat_faced", "offset_roller", "polynomial", "cylindrical", "scca_dynamics",
         "oscillating_roller", "oscillating_flat_faced", "grooved", "conjugate"})
     examples.push_back({"cam", kExamples / "cams" / (std::string(cam) + ".xml")});
-  for (const char* vessel : {"hemispherical", "ellipsoidal_2_1", "torispherical_100_6",
-                             "custom_curvature", "torispherical_100_6_exact"})
+  for (const char* vessel :
+       {"hemispherical", "ellipsoidal_2_1", "torispherical_100_6", "custom_curvature",
+        "torispherical_100_6_exact", "minimum_stress_2_1_depth"})
     examples.push_back({"vessel", kExamples / "vessels" / (std::string(vessel) + ".xml")});
   for (const char* scan : {"sphere_like_fit.xml", "lobed_profile_fit.xml", "sphere_like.xyz",
                            "vase.xyz", "lobed_profile.xyz"})
