@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "src/error.h"
 #include "src/number_text.h"
@@ -151,6 +152,41 @@ std::vector<Rule> rules(const TorisphericalHead& head, const Load& k,
   warn_above(warnings, "Appendix 1-4(d)", "L/r", L / r, "16 2/3 (Table 1-4.2)", 50.0 / 3, "");
   // Appendix 1-4(d): t = PLM/(2SE − 0.2P), P = 2SEt/(LM + 0.2t).
   return {{name, k.P * L * M / (2 * SE - 0.2 * k.P), 2 * SE * k.t / (L * M + 0.2 * k.t)}};
+}
+
+std::vector<Rule> rules(const ConicalHead& head, const Load& k,
+                        std::vector<std::string>& warnings) {
+  const double D0 = head.inside_diameter, a = head.half_angle, r0 = head.knuckle_radius;
+  require_positive(D0, "conical head: inside diameter D", "mm");
+  require(a > 0.0 && a < std::numbers::pi / 2,
+          quantity("conical head: half apex angle α", a * 180 / std::numbers::pi, "°"),
+          "0° < α < 90°");
+  require(r0 >= 0.0 && r0 < D0 / 2, quantity("conical head: knuckle radius r", r0, "mm"),
+          "0 <= r < D/2 = " + number_text(D0 / 2) + " mm");
+  const double D = D0 + 2 * k.c, SE = k.S * k.E, ca = std::cos(a);
+  const double t_nominal = k.t + k.c, outside_diameter = D0 + 2 * t_nominal;
+  warn_above(warnings, r0 > 0.0 ? "UG-32(h)" : "UG-32(g)", "half apex angle α",
+             a * 180 / std::numbers::pi, "30° (Appendix 1-5 then applies, not checked)", 30.0, "°");
+  // UG-32(g): t = PD/(2 cos α (SE − 0.6P)), P = 2SEt cos α/(D + 1.2t cos α); with a knuckle
+  // (UG-32(h)) on the cone's inside diameter where it meets the knuckle, Di = D − 2r(1 − cos α).
+  const double r = r0 > 0.0 ? r0 + k.c : 0.0, Di = D - 2 * r * (1 - ca);
+  const std::string cone = r0 > 0.0 ? "UG-32(h) toriconical, cone" : "UG-32(g) conical";
+  require_pressure_below(k, SE / 0.6, "S·E/0.6", cone);
+  std::vector<Rule> out = {
+      {cone, k.P * Di / (2 * ca * (SE - 0.6 * k.P)), 2 * SE * k.t * ca / (Di + 1.2 * k.t * ca)}};
+  if (r0 > 0.0) {
+    warn_above(warnings, "UG-32(h)", "0.06·(D + 2t)", 0.06 * outside_diameter, "knuckle radius r",
+               r0, "mm");
+    warn_above(warnings, "UG-32(h)", "3t", 3 * t_nominal, "knuckle radius r", r0, "mm");
+    // UG-32(h): the knuckle by Appendix 1-4(d) with L = Di/(2 cos α).
+    const double L = Di / (2 * ca), M = torispherical_head_factor(L, r);
+    const std::string knuckle =
+        "UG-32(h) toriconical, knuckle, Appendix 1-4(d) M = " + number_text(M);
+    require_head_pressure(k, knuckle);
+    out.push_back(
+        {knuckle, k.P * L * M / (2 * SE - 0.2 * k.P), 2 * SE * k.t / (L * M + 0.2 * k.t)});
+  }
+  return out;
 }
 
 }  // namespace

@@ -2,7 +2,9 @@
 // thickness and the maximum allowable working pressure (MAWP) of a cylindrical shell (UG-27(c)(1)
 // and (2)), a hemispherical head (UG-32(f)), an ellipsoidal head (2:1: UG-32(d), other ratios:
 // Mandatory Appendix 1-4(c)) and a torispherical head (100 %/6 %: UG-32(e), other proportions:
-// Appendix 1-4(d)), with a corrosion allowance, and the limits of applicability they state.
+// Appendix 1-4(d)) and a conical head (UG-32(g); with a knuckle, UG-32(h): the cone on the
+// diameter Di where it meets the knuckle, the knuckle by Appendix 1-4(d) with L = Di/(2 cos α)),
+// with a corrosion allowance, and the limits of applicability they state.
 //
 // Paragraph letters as in the editions that letter the head rules (d), (e), (f), e.g. the 1983
 // edition; later editions letter them (c), (d), (e) with unchanged formulas. Not implemented: the
@@ -40,8 +42,13 @@ struct TorisphericalHead {
   double knuckle_radius = 0.0;   // r, 0 < r < D/2; r = 0.06 L is the 100 %/6 % head
 };
 
-using PressurePart =
-    std::variant<CylindricalShell, HemisphericalHead, EllipsoidalHead, TorisphericalHead>;
+struct ConicalHead {
+  double inside_diameter = 0.0;  // D of the skirt
+  double half_angle = 0.0;       // α, rad, 0 < α < 90°
+  double knuckle_radius = 0.0;   // r, 0 <= r < D/2; 0 is a cone without knuckle (UG-32(g))
+};
+using PressurePart = std::variant<CylindricalShell, HemisphericalHead, EllipsoidalHead,
+                                  TorisphericalHead, ConicalHead>;
 
 struct InternalPressureDesign {
   double allowable_stress = 0.0;     // S, MPa, > 0
@@ -75,7 +82,9 @@ struct CodeCheck {
 // hemisphere P > 0.665·S·E, t − c > 0.356·L (UG-27(d) through UG-32(f)); ellipsoid D/2h outside
 // Table 1-4.1's 1 to 3 (Appendix 1-4(c) only); torispherical head L/r > 16⅔ (Appendix 1-4(d)
 // only), L > D + 2t, r < 0.06·(D + 2t), r < 3t (UG-32(j)), t − c < 0.002·L (Appendix 1-4(f) then
-// applies and is not checked). t and D, L, r of UG-32(j) are nominal; the rest corroded.
+// applies and is not checked); cone α > 30° (UG-32(g), (h): Appendix 1-5 then applies and is not
+// checked), knuckle r < 0.06·(D + 2t) or < 3t (UG-32(h)). t and D, L, r of UG-32(h), (j) are
+// nominal; the rest corroded.
 CodeCheck check_internal_pressure(const InternalPressureDesign& design);
 
 // K = (2 + (D/2h)²)/6, Appendix 1-4(c); 1 for the 2:1 head. Throws InputError unless D, h > 0.

@@ -30,6 +30,11 @@ ConicArc circular_arc(const Eigen::Vector2d& centre, double r, double a0, double
           centre + r * direction(a1), std::cos(half)};
 }
 
+// The straight segment from a to b as a rational quadratic: middle point the midpoint, weight 1.
+ConicArc straight(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return {a, 0.5 * (a + b), b, 1.0};
+}
+
 // A quarter of the ellipse x²/a² + z²/b² = 1 from (sign·a, 0) to the apex (0, b) or back: the
 // affine image of a circular quarter, middle point the corner (sign·a, b), weight √2/2.
 ConicArc elliptic_quarter(double a, double b, bool to_apex) {
@@ -79,6 +84,18 @@ ExactHead exact_head(const HeadPreset& preset, double radius) {
       arcs = {circular_arc({kx, 0.0}, rk, 0.0, alpha), circular_arc({0.0, zc}, rc, alpha, kPi / 2),
               circular_arc({0.0, zc}, rc, kPi / 2, kPi - alpha),
               circular_arc({-kx, 0.0}, rk, kPi - alpha, kPi)};
+      break;
+    }
+    case HeadKind::conical: {
+      // The knuckle about (R − r, 0) turns by α to T, the cone runs straight to the apex.
+      const double alpha = preset.half_angle, rk = preset.knuckle;
+      const ConeGeometry g = cone_geometry(radius, alpha, rk);
+      const Eigen::Vector2d t{g.tangent_x, g.tangent_z}, apex{0.0, g.apex_z};
+      const Eigen::Vector2d mirror{-1.0, 1.0};
+      if (rk > 0.0) arcs.push_back(circular_arc({g.knuckle_centre_x, 0.0}, rk, 0.0, alpha));
+      arcs.push_back(straight(t, apex));
+      arcs.push_back(straight(apex, t.cwiseProduct(mirror)));
+      if (rk > 0.0) arcs.push_back(circular_arc({-g.knuckle_centre_x, 0.0}, rk, kPi - alpha, kPi));
       break;
     }
   }

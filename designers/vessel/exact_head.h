@@ -13,14 +13,15 @@ namespace polarform {
 struct ExactHead {
   HeadShape shape;              // the closed form: pieces, depth, curvature jumps
   NurbsCurve2d meridian;        // degree 2, junction A → apex → junction B, (x, z)
-  // Rational quadratic segments, on [i, i + 1] each (2 per half for a torispherical head): the
-  // apex is at the parameter arcs / 2.
+  // Rational quadratic segments, on [i, i + 1] each (2 per half for a torispherical head and a
+  // conical one with a knuckle): the apex is at the parameter arcs / 2.
   int arcs = 0;
 };
 
 // Hemispherical: two circular quarters; ellipsoidal: two elliptic quarters (semi-axes radius and
-// radius/ratio); torispherical: knuckle, crown to the apex, and mirrored. Throws InputError for
-// the parameters head_shape rejects.
+// radius/ratio); torispherical: knuckle, crown to the apex, and mirrored; conical: knuckle (if any)
+// and the cone's straight meridian to the apex as a degree-2 line, and mirrored. Throws InputError
+// for the parameters head_shape rejects.
 ExactHead exact_head(const HeadPreset& preset, double radius);
 
 // The largest |ρ − R(θ)| of the meridian against the closed form R(θ) of `shape`, at `samples`

@@ -30,6 +30,16 @@ void require_torispherical(double radius, double crown, double knuckle) {
                      " mm, expected L >= R = " + number_text(radius) + " mm");
 }
 
+// The zone swept by a knuckle: the arc of radius r about (c, 0) from the junction over the angle
+// φ, its lamina beyond x = c of area A = r²(φ + sin φ cos φ)/2 and moment c·A + (r²·z − z³/3)/2
+// about the axis (z = r sin φ), so the zone holds π·c²·z + 2π·c·A + π(r²·z − z³/3); the arc of
+// length r·φ and centroid distance c + r·sin φ/φ sweeps 2π·r(c·φ + r·sin φ) (Pappus).
+HeadMeasures knuckle_zone(double c, double r, double phi) {
+  const double s = std::sin(phi), z = r * s, lamina = r * r * (phi + s * std::cos(phi)) / 2;
+  return {kPi * c * c * z + 2 * kPi * c * lamina + kPi * (r * r * z - z * z * z / 3),
+          2 * kPi * r * (c * phi + r * s)};
+}
+
 // f(e)/e, and its limit 1 at e = 0, for f = asin, atanh, asinh.
 template <class F>
 double over_e(double e, F f) {
@@ -65,21 +75,28 @@ double torispherical_depth(double radius, double crown, double knuckle) {
 
 // Pappus's centroid theorems on the meridian. The knuckle is the arc of radius r about
 // (c, 0), c = R − r, from the junction to the joint where its normal, at angle φ from the radial
-// direction, points along the line of centres: cos φ = c/(L − r). Its lamina beyond x = c has area
-// A = r²(φ + sin φ cos φ)/2 and moment c·A + (r²·z − z³/3)/2 about the axis (z = r sin φ), so the
-// zone holds π·c²·z + 2π·c·A + π(r²·z − z³/3); its arc of length r·φ and centroid distance
-// c + r·sin φ/φ sweeps 2π·r(c·φ + r·sin φ). The crown above is a cap of height
-// k = L(1 − sin φ) = L·cos²φ/(1 + sin φ): π·k²(3L − k)/3 and 2π·L·k.
+// direction, points along the line of centres: cos φ = c/(L − r) (knuckle_zone). The crown above
+// is a cap of height k = L(1 − sin φ) = L·cos²φ/(1 + sin φ): π·k²(3L − k)/3 and 2π·L·k.
 HeadMeasures torispherical_head_measures(double radius, double crown, double knuckle) {
   require_torispherical(radius, crown, knuckle);
   const double r = knuckle, L = crown, c = radius - knuckle;
   const double phi = std::atan2(std::sqrt((L - radius) * (L + radius - 2 * r)), c);
-  const double s = std::sin(phi), cs = std::cos(phi), z = r * s;
-  const double lamina = r * r * (phi + s * cs) / 2;
+  const double s = std::sin(phi), cs = std::cos(phi);
   const double k = L * cs * cs / (1 + s);
-  return {kPi * c * c * z + 2 * kPi * c * lamina + kPi * (r * r * z - z * z * z / 3) +
-              kPi * k * k * (3 * L - k) / 3,
-          2 * kPi * r * (c * phi + r * s) + 2 * kPi * L * k};
+  const HeadMeasures zone = knuckle_zone(c, r, phi);
+  return {zone.volume + kPi * k * k * (3 * L - k) / 3, zone.area + 2 * kPi * L * k};
+}
+
+// The knuckle zone over φ = α (knuckle_zone: its normal turns from radial to the cone's
+// (cos α, sin α)), then the cone from its tangent circle of
+// radius x_T to the apex: π·x_T³·cot α/3 and the lateral area π·x_T²/sin α.
+HeadMeasures conical_head_measures(double radius, double half_angle, double knuckle) {
+  require_positive(radius, "radius R", "mm");
+  const ConeGeometry g = cone_geometry(radius, half_angle, knuckle);
+  const HeadMeasures zone = knuckle_zone(g.knuckle_centre_x, knuckle, half_angle);
+  const double x = g.tangent_x;
+  return {zone.volume + kPi * x * x * x / std::tan(half_angle) / 3,
+          zone.area + kPi * x * x / std::sin(half_angle)};
 }
 
 HeadMeasures cylinder_measures(double radius, double length) {
@@ -97,6 +114,8 @@ HeadMeasures head_measures(const HeadPreset& preset, double radius) {
       return ellipsoidal_head_measures(radius, radius / preset.ratio);
     case HeadKind::torispherical:
       return torispherical_head_measures(radius, preset.crown, preset.knuckle);
+    case HeadKind::conical:
+      return conical_head_measures(radius, preset.half_angle, preset.knuckle);
   }
   return {};
 }
@@ -128,6 +147,20 @@ double torispherical_metal_volume(double radius, double crown, double knuckle, d
   return torispherical_head_measures(radius + t, crown + t, knuckle + t).volume - inside;
 }
 
+// The outer surface is the conical head on R + t with knuckle r + t about the same centre (the
+// offset of a circle is concentric, of a line parallel), except at the apex, where the offset of
+// the cone point is the sphere of radius t about it: the sharp tip beyond the sphere's tangent
+// circle (at height t·sin α above the apex) is a cone of volume π·t³·cos⁴α/(3 sin α), the sphere's
+// cap above it π·H²(3t − H)/3 with H = t(1 − sin α).
+double conical_metal_volume(double radius, double half_angle, double knuckle, double thickness) {
+  require_positive(thickness, "thickness t", "mm");
+  const double t = thickness, a = half_angle, c = std::cos(a), s = std::sin(a);
+  const double inside = conical_head_measures(radius, a, knuckle).volume;
+  const double H = t * (1 - s);
+  const double tip = kPi * t * t * t * c * c * c * c / (3 * s) - kPi * H * H * (3 * t - H) / 3;
+  return conical_head_measures(radius + t, a, knuckle + t).volume - inside - tip;
+}
+
 double cylinder_metal_volume(double radius, double length, double thickness) {
   require_positive(thickness, "thickness t", "mm");
   const double inside = cylinder_measures(radius, length).volume;
@@ -143,6 +176,8 @@ double head_metal_volume(const HeadPreset& preset, double radius, double thickne
       return ellipsoidal_metal_volume(radius, radius / preset.ratio, thickness);
     case HeadKind::torispherical:
       return torispherical_metal_volume(radius, preset.crown, preset.knuckle, thickness);
+    case HeadKind::conical:
+      return conical_metal_volume(radius, preset.half_angle, preset.knuckle, thickness);
   }
   return 0.0;
 }

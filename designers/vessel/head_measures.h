@@ -3,7 +3,7 @@
 // head's depth, the metal volume of a wall of thickness t (between the inner surface and the outer
 // one offset by t along the normal) and its weight. Lengths in mm, volumes in mm³, areas in mm².
 // Every function throws InputError naming the parameter unless lengths are finite and > 0 and the
-// torispherical head's 0 < r < R <= L.
+// torispherical head's 0 < r < R <= L (the conical head's: 0 < α < 90°, 0 <= r < R).
 #pragma once
 
 #include "designers/vessel/head_preset.h"
@@ -27,6 +27,9 @@ HeadMeasures ellipsoidal_head_measures(double radius, double depth);
 // knuckle's torus zone plus the crown's spherical cap.
 HeadMeasures torispherical_head_measures(double radius, double crown, double knuckle);
 
+// Conical head of vessel radius R, half apex angle α (0 < α < 90°) and knuckle radius r
+// (0 <= r < R): the knuckle's torus zone plus the cone to the apex (cone_geometry).
+HeadMeasures conical_head_measures(double radius, double half_angle, double knuckle);
 // h = L − √((L − r)² − (R − r)²), the apex's height above the junction plane.
 double torispherical_depth(double radius, double crown, double knuckle);
 
@@ -45,6 +48,9 @@ HeadMeasures head_measures(const HeadPreset& preset, double radius);
 double hemispherical_metal_volume(double radius, double thickness);
 double ellipsoidal_metal_volume(double radius, double depth, double thickness);
 double torispherical_metal_volume(double radius, double crown, double knuckle, double thickness);
+// The conical head's outer surface is the same shape on R + t, r + t but for the apex, where it
+// is a sphere of radius t: the sharp tip beyond it is subtracted.
+double conical_metal_volume(double radius, double half_angle, double knuckle, double thickness);
 double cylinder_metal_volume(double radius, double length, double thickness);
 double head_metal_volume(const HeadPreset& preset, double radius, double thickness);
 

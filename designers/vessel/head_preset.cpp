@@ -44,6 +44,7 @@ PolarFunction joined(const std::vector<PolarFunction>& pieces) {
   for (std::size_t i = 1; i < pieces.size(); ++i) f.breakpoints.push_back(pieces[i].start);
   f.breakpoints.push_back(kPi / 2);
   std::sort(f.breakpoints.begin(), f.breakpoints.end());
+  f.breakpoints.erase(std::unique(f.breakpoints.begin(), f.breakpoints.end()), f.breakpoints.end());
   f.derivatives = [pieces](double theta, int d, double* out) {
     std::size_t i = 0;
     while (i + 1 < pieces.size() && theta > pieces[i].end) ++i;
@@ -59,6 +60,8 @@ const char* head_kind_name(HeadKind kind) {
     case HeadKind::hemispherical: return "hemispherical";
     case HeadKind::ellipsoidal: return "ellipsoidal";
     case HeadKind::torispherical: return "torispherical";
+    case HeadKind::conical:
+      return "conical";
   }
   return "";
 }
@@ -80,6 +83,21 @@ HeadPreset torispherical_of_depth(double radius, double depth, double knuckle) {
   // L − a = (a − h)² / (2 (h − r)) >= 0: the crown is never smaller than the radius.
   return {HeadKind::torispherical, 2.0, (h * h - r * r + (a - r) * (a - r)) / (2 * (h - r)),
           knuckle};
+}
+
+ConeGeometry cone_geometry(double radius, double half_angle, double knuckle) {
+  if (!(half_angle > 0.0 && half_angle < kPi / 2))
+    throw InputError("head preset: conical half angle " + short_text(half_angle * 180 / kPi) +
+                     "°, expected 0° < α < 90°");
+  if (!(knuckle >= 0.0 && knuckle < radius))
+    throw InputError("head preset: conical knuckle " + to_text(knuckle) +
+                     " mm, expected 0 <= knuckle < radius = " + to_text(radius) + " mm");
+  ConeGeometry g;
+  g.knuckle_centre_x = radius - knuckle;
+  g.tangent_x = g.knuckle_centre_x + knuckle * std::cos(half_angle);
+  g.tangent_z = knuckle * std::sin(half_angle);
+  g.apex_z = g.tangent_z + g.tangent_x / std::tan(half_angle);
+  return g;
 }
 
 HeadShape head_shape(const HeadPreset& preset, double radius) {
@@ -128,6 +146,32 @@ HeadShape head_shape(const HeadPreset& preset, double radius) {
       shape.pieces.push_back(piece(kPi - joint, kPi, [kx, rk](double t, int d, double* out) {
         circle_polar(-kx, 0.0, rk, t, d, out);
       }));
+      break;
+    }
+    case HeadKind::conical: {
+      const double alpha = preset.half_angle, rk = preset.knuckle;
+      const ConeGeometry g = cone_geometry(radius, alpha, rk);
+      // The cone's line has the outward normal (cos α, sin α) on side A, (−cos α, sin α) on B.
+      const double joint = std::atan2(g.tangent_z, g.tangent_x);
+      const double distance = g.tangent_x * std::cos(alpha) + g.tangent_z * std::sin(alpha);
+      shape.name = "conical, half angle " + short_text(alpha * 180 / kPi) + "°" +
+                   (rk > 0.0 ? ", knuckle " + short_text(rk) + " mm" : std::string());
+      const double kx = g.knuckle_centre_x;
+      if (rk > 0.0)
+        shape.pieces.push_back(piece(0.0, joint, [kx, rk](double t, int d, double* out) {
+          circle_polar(kx, 0.0, rk, t, d, out);
+        }));
+      shape.pieces.push_back(piece(joint, kPi / 2, [alpha, distance](double t, int d, double* out) {
+        line_polar(alpha, distance, t, d, out);
+      }));
+      shape.pieces.push_back(
+          piece(kPi / 2, kPi - joint, [alpha, distance](double t, int d, double* out) {
+            line_polar(kPi - alpha, distance, t, d, out);
+          }));
+      if (rk > 0.0)
+        shape.pieces.push_back(piece(kPi - joint, kPi, [kx, rk](double t, int d, double* out) {
+          circle_polar(-kx, 0.0, rk, t, d, out);
+        }));
       break;
     }
   }

@@ -1,8 +1,9 @@
-// The heads a vessel engineer knows — hemispherical, semi-ellipsoidal (2:1 by default) and
-// torispherical (crown and knuckle radii) — as exact meridians R(θ) on [0, π] about the head's polar
-// origin, as curvature distributions, and with the places where that curvature jumps (at the
-// junctions with the cylinder, whose meridian is straight, and at the knuckle–crown joints).
-// Sampled as curvature targets they are the input of the curvature-continuous alternative.
+// The heads a vessel engineer knows — hemispherical, semi-ellipsoidal (2:1 by default),
+// torispherical (crown and knuckle radii) and conical (half apex angle, with or without a knuckle)
+// — as exact meridians R(θ) on [0, π] about the head's polar origin, as curvature distributions,
+// and with the places where that curvature jumps (at the junctions with the cylinder, whose
+// meridian is straight, and at the knuckle–crown joints). Sampled as curvature targets they are the
+// input of the curvature-continuous alternative.
 #pragma once
 
 #include <string>
@@ -13,16 +14,17 @@
 
 namespace polarform {
 
-enum class HeadKind { hemispherical, ellipsoidal, torispherical };
+enum class HeadKind { hemispherical, ellipsoidal, torispherical, conical };
 
-// "hemispherical", "ellipsoidal", "torispherical" (the words of the project file).
+// "hemispherical", "ellipsoidal", "torispherical", "conical" (the words of the project file).
 const char* head_kind_name(HeadKind kind);
 
 struct HeadPreset {
   HeadKind kind = HeadKind::hemispherical;
   double ratio = 2.0;    // ellipsoidal: cylinder radius / head depth (2 for the 2:1 head)
   double crown = 0.0;    // torispherical: crown (dish) radius, mm
-  double knuckle = 0.0;  // torispherical: knuckle radius, mm
+  double knuckle = 0.0;  // torispherical, conical: knuckle radius, mm (a conical head's may be 0)
+  double half_angle = 0.0;  // conical: half apex angle α between the cone and the axis, rad
 
   bool operator==(const HeadPreset&) const = default;
 };
@@ -36,6 +38,18 @@ HeadPreset torispherical_80_10(double radius);
 // (a − r, 0), the crown centre (0, h − L)). L − a = (a − h)²/(2(h − r)) >= 0. Throws InputError
 // unless 0 < knuckle < depth.
 HeadPreset torispherical_of_depth(double radius, double depth, double knuckle);
+
+// A conical head's meridian (x radial, z axial) for a cylinder of radius R: the knuckle of radius
+// r about (R − r, 0) from the junction over the angle α to its tangent point
+// T = (R − r + r cos α, r sin α) with the cone (outward normal (cos α, sin α)), whose straight
+// meridian runs on to the apex (0, z_T + x_T cot α) on the axis.
+struct ConeGeometry {
+  double knuckle_centre_x = 0.0;            // R − r, mm
+  double tangent_x = 0.0, tangent_z = 0.0;  // T, mm
+  double apex_z = 0.0;                      // the head's depth, mm
+};
+// Throws InputError unless 0 < α < 90° and 0 <= r < R.
+ConeGeometry cone_geometry(double radius, double half_angle, double knuckle);
 
 struct CurvatureJump {
   double theta = 0.0;         // rad
@@ -52,8 +66,10 @@ struct HeadShape {
 };
 
 // The preset for a cylinder of `radius` (mm). Throws InputError naming the parameter unless
-// radius > 0, ratio > 0 (ellipsoidal) and 0 < knuckle < radius <= crown (torispherical: the
-// knuckle leaves the cylinder tangentially and meets a crown centred on the axis).
+// radius > 0, ratio > 0 (ellipsoidal), 0 < knuckle < radius <= crown (torispherical: the
+// knuckle leaves the cylinder tangentially and meets a crown centred on the axis) and 0 < α < 90°,
+// 0 <= knuckle < radius (conical; without a knuckle the cone meets the cylinder at a kink, and
+// the apex is a cone point).
 HeadShape head_shape(const HeadPreset& preset, double radius);
 
 // The curvature distribution as `count` >= 1 targets at θ_k = (k + ½)π / count, weight 1.

@@ -114,7 +114,8 @@ PrincipalRadii principal_radii(const PolarFunction& head, double theta) {
   double d[3];
   head.derivatives(theta, 2, d);
   const double kappa1 = polar_curvature(d[0], d[1], d[2]);
-  if (theta == kHalfPi) return {kappa1, 1.0 / kappa1};
+  // The apex: a smooth one's r2 is its r1; at a cone point (R' ≠ 0) r2 = x/n_x vanishes with x.
+  if (theta == kHalfPi) return {kappa1, std::abs(d[1]) > 1e-12 * d[0] ? 0.0 : 1.0 / kappa1};
   const double c = std::cos(theta), s = std::sin(theta);
   return {kappa1, d[0] * c * std::hypot(d[0], d[1]) / (d[1] * s + d[0] * c)};
 }

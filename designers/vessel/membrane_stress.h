@@ -17,7 +17,7 @@ struct PrincipalRadii {
 };
 
 // At θ in [0, π/2] of a head meridian R(θ) (x = R cos θ radial, z = R sin θ axial); at θ = π/2
-// (the apex) r2 takes its limit r1 for a smooth apex.
+// (the apex) r2 takes its limit r1 for a smooth apex and 0 at a cone point.
 PrincipalRadii principal_radii(const PolarFunction& head, double theta);
 
 struct MembraneForces {

@@ -29,4 +29,13 @@ void ellipse_polar(double a, double b, double theta, int d, double* out) {
   for (int k = 0; k <= d; ++k) out[k] = R[k];
 }
 
+// R = d·sec u with u = θ − β: sec' = sec·tan, tan' = sec², so R' = d·s·t, R'' = d(s·t² + s³),
+// R''' = d(s·t³ + 5s³·t) with s = sec u, t = tan u.
+void line_polar(double beta, double distance, double theta, int d, double* out) {
+  const double s = 1 / std::cos(theta - beta), t = std::tan(theta - beta);
+  const double R[4] = {distance * s, distance * s * t, distance * (s * t * t + s * s * s),
+                       distance * (s * t * t * t + 5 * s * s * s * t)};
+  for (int k = 0; k <= d; ++k) out[k] = R[k];
+}
+
 }  // namespace polarform

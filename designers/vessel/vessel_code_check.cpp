@@ -17,6 +17,8 @@ PressurePart code_part(const HeadPreset& h, double radius) {
       return EllipsoidalHead{2 * radius, radius / h.ratio};
     case HeadKind::torispherical:
       return TorisphericalHead{2 * radius, h.crown, h.knuckle};
+    case HeadKind::conical:
+      return ConicalHead{2 * radius, h.half_angle, h.knuckle};
   }
   return HemisphericalHead{radius};
 }

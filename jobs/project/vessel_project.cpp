@@ -101,7 +101,8 @@ void read_head(const XmlElementReader& r, VesselDesign& d, bool curvature_inputs
         r.fail(name, std::string("no ") + name + " unless design=\"minimum-stress\"");
   }
   HeadPreset h;
-  const std::string preset = r.choice("preset", {"hemispherical", "ellipsoidal", "torispherical"});
+  const std::string preset =
+      r.choice("preset", {"hemispherical", "ellipsoidal", "torispherical", "conical"});
   if (preset == "ellipsoidal") {
     h.kind = HeadKind::ellipsoidal;
     h.ratio = r.positive("ratio", 2.0);
@@ -113,6 +114,14 @@ void read_head(const XmlElementReader& r, VesselDesign& d, bool curvature_inputs
       r.fail("knuckle", "a knuckle radius below the vessel radius " + number(d.radius) + " mm");
     if (!(h.crown >= d.radius))
       r.fail("crown", "a crown radius at least the vessel radius " + number(d.radius) + " mm");
+  } else if (preset == "conical") {
+    h.kind = HeadKind::conical;
+    const double angle = r.positive("half-angle");
+    if (!(angle < 90.0)) r.fail("half-angle", "a half apex angle in (0, 90) degrees");
+    h.half_angle = to_radians(angle);
+    h.knuckle = r.positive("knuckle", 0.0, true);
+    if (!(h.knuckle < d.radius))
+      r.fail("knuckle", "a knuckle radius below the vessel radius " + number(d.radius) + " mm");
   }
   d.preset_targets = r.integer("targets", d.preset_targets);
   if (d.preset_targets < 1 || d.preset_targets > kMaxCurvatureTargets)
@@ -331,6 +340,10 @@ std::string vessel_project_xml(const VesselProject& p) {
       attribute(out, "ratio", d.preset->ratio);
     if (d.preset && d.preset->kind == HeadKind::torispherical) {
       attribute(out, "crown", d.preset->crown);
+      attribute(out, "knuckle", d.preset->knuckle);
+    }
+    if (d.preset && d.preset->kind == HeadKind::conical) {
+      attribute(out, "half-angle", to_degrees(d.preset->half_angle));
       attribute(out, "knuckle", d.preset->knuckle);
     }
     if (d.preset) attribute(out, "targets", std::to_string(d.preset_targets));

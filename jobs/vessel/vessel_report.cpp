@@ -67,6 +67,10 @@ json standard_head_json(const HeadPreset& h, const HeadShape& shape) {
     j["crown_mm"] = h.crown;
     j["knuckle_mm"] = h.knuckle;
   }
+  if (h.kind == HeadKind::conical) {
+    j["half_angle_deg"] = h.half_angle * kDegreesPerRadian;
+    j["knuckle_mm"] = h.knuckle;
+  }
   j["depth_mm"] = shape.depth;
   j["curvature_jumps"] = json::array();
   for (const CurvatureJump& k : shape.jumps)

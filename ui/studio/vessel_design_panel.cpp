@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <array>
+#include <numbers>
 #include <string_view>
 
+#include "src/units.h"
 #include "ui/studio/widgets.h"
 
 namespace polarform::studio {
@@ -65,8 +67,8 @@ bool VesselDesignPanel::draw(VesselProject& p) {
 
 bool VesselDesignPanel::draw_preset(VesselDesign& d) {
   bool changed = false;
-  static constexpr std::array<std::string_view, 4> kNames = {"none", "hemispherical", "ellipsoidal",
-                                                             "torispherical"};
+  static constexpr std::array<std::string_view, 5> kNames = {"none", "hemispherical", "ellipsoidal",
+                                                             "torispherical", "conical"};
   int kind = d.preset ? static_cast<int>(d.preset->kind) + 1 : 0;
   if (combo("preset", kind, kNames)) {
     if (kind == 0) {
@@ -74,6 +76,8 @@ bool VesselDesignPanel::draw_preset(VesselDesign& d) {
     } else {
       HeadPreset preset = kind == 3 ? torispherical_100_6(d.radius) : HeadPreset{};
       preset.kind = static_cast<HeadKind>(kind - 1);
+      if (preset.kind == HeadKind::conical)  // a 30° toriconical head, knuckle 6 % of D
+        preset.half_angle = std::numbers::pi / 6, preset.knuckle = 0.12 * d.radius;
       d.preset = preset;
     }
     changed = true;
@@ -94,6 +98,14 @@ bool VesselDesignPanel::draw_preset(VesselDesign& d) {
       h = torispherical_80_10(d.radius);
       changed = true;
     }
+  }
+  if (h.kind == HeadKind::conical) {
+    double degrees = to_degrees(h.half_angle);
+    if (drag_number("half apex angle [deg]", degrees, 0.1, 1.0, 89.0, "%.2f")) {
+      h.half_angle = to_radians(degrees);
+      changed = true;
+    }
+    changed |= drag_number("knuckle radius [mm]", h.knuckle, 0.5, 0.0, 1e7, "%.3f");
   }
   if (d.head_design != HeadDesign::curvature) return changed;
   changed |= input_int("sampled targets", d.preset_targets, 1, 2000);

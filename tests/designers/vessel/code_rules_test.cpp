@@ -187,11 +187,48 @@ TEST(CodeRules, AppendixFormulasReduceToUg32) {
 
 // Required thickness as the nominal one gives back the design pressure as MAWP, for every part,
 // pressures from 0.1 to 50 MPa and corrosion allowances 0 and 3 mm.
+// UG-32(g), α = 30°, D = 1000: t = PD/(2 cos α (SE − 0.6P)) = 1500/(√3·(138 − 0.9)) =
+// 6.316742551…; MAWP at t = 10: 2·138·10·cos α/(1000 + 12 cos α) = 2.365645604… MPa.
+// UG-32(h) with r = 60: the cone on Di = 1000 − 120(1 − cos α) = 983.9230485, t = 6.215188587…;
+// the knuckle by Appendix 1-4(d), L = Di/(2 cos α) = 568.0682…, M = (3 + √(L/r))/4 = 1.519245…,
+// t = PLM/(2SE − 0.2P) = 4.6955…, so the cone governs.
+TEST(CodeRules, ConicalHeads) {
+  const double a = std::acos(-1.0) / 6, ca = std::cos(a);
+  const CodeCheck cone = check_internal_pressure(design(ConicalHead{1000, a, 0}));
+  EXPECT_NEAR(cone.required_thickness, 1.5 * 1000 / (2 * ca * (138 - 0.9)), 1e-12);
+  EXPECT_NEAR(cone.required_thickness, 6.316742551, 1e-9);
+  EXPECT_NEAR(cone.mawp, 2 * 138 * 10 * ca / (1000 + 12 * ca), 1e-12);
+  EXPECT_NEAR(cone.mawp, 2.365645604, 1e-9);
+  EXPECT_EQ(cone.thickness_formula, "UG-32(g) conical");
+  const CodeCheck tori = check_internal_pressure(design(ConicalHead{1000, a, 60}));
+  const double Di = 1000 - 120 * (1 - ca), L = Di / (2 * ca), M = (3 + std::sqrt(L / 60)) / 4;
+  EXPECT_NEAR(tori.required_thickness, 1.5 * Di / (2 * ca * (138 - 0.9)), 1e-12);
+  EXPECT_NEAR(tori.required_thickness, 6.215188587, 1e-9);
+  EXPECT_EQ(tori.thickness_formula, "UG-32(h) toriconical, cone");
+  EXPECT_GT(1.5 * Di / (2 * ca * (138 - 0.9)), 1.5 * L * M / (276 - 0.3));
+  // A sharp knuckle governs: r = 5 mm.
+  const CodeCheck sharp = check_internal_pressure(design(ConicalHead{1000, a, 5}));
+  EXPECT_THAT(sharp.thickness_formula, HasSubstr("knuckle, Appendix 1-4(d)"));
+  EXPECT_THAT(sharp.warnings, testing::Contains(HasSubstr("UG-32(h): 0.06·(D + 2t)")));
+  const CodeCheck steep = check_internal_pressure(design(ConicalHead{1000, a * 1.5, 0}));
+  EXPECT_THAT(steep.warnings, testing::Contains(HasSubstr("UG-32(g): half apex angle α = 45")));
+  EXPECT_THROW(check_internal_pressure(design(ConicalHead{1000, 0.0, 0})), InputError);
+  EXPECT_THROW(check_internal_pressure(design(ConicalHead{1000, a, 500})), InputError);
+}
+
 TEST(CodeRules, ThicknessAndPressureInvertEachOther) {
-  const PressurePart parts[] = {
-      kShell,      CylindricalShell{500, 0.35},       kHemisphere,
-      kTwoToOne,   EllipsoidalHead{1000, 180},        EllipsoidalHead{1000, 600},
-      kHundredSix, TorisphericalHead{1000, 800, 100}, TorisphericalHead{1000, 3000, 40}};
+  const PressurePart parts[] = {kShell,
+                                CylindricalShell{500, 0.35},
+                                kHemisphere,
+                                kTwoToOne,
+                                EllipsoidalHead{1000, 180},
+                                EllipsoidalHead{1000, 600},
+                                kHundredSix,
+                                TorisphericalHead{1000, 800, 100},
+                                TorisphericalHead{1000, 3000, 40},
+                                ConicalHead{1000, 0.5, 0},
+                                ConicalHead{1000, 0.5, 80},
+                                ConicalHead{1000, 1.2, 10}};
   for (const PressurePart& part : parts)
     for (const double P : {0.1, 1.5, 10.0, 50.0})
       for (const double c : {0.0, 3.0}) {

@@ -38,6 +38,15 @@ double closed_form_residual(const HeadPreset& h, double R, const Eigen::Vector2d
       if (std::abs(p.x()) <= joint_x) return std::hypot(p.x(), p.y() - zc) - rc;
       return std::hypot(std::abs(p.x()) - kx, p.y()) - rk;
     }
+    case HeadKind::conical: {
+      // The cone: the line through the apex (0, z_A) at α to the axis, z_A from the knuckle's
+      // tangent point written out here; below the tangent point's height, the knuckle circle.
+      const double a = h.half_angle, rk = h.knuckle, kx = R - rk;
+      const double tx = kx + rk * std::cos(a), tz = rk * std::sin(a);
+      const double apex = tz + tx * std::cos(a) / std::sin(a);
+      if (p.y() < tz - 1e-12) return std::hypot(std::abs(p.x()) - kx, p.y()) - rk;
+      return std::abs(p.x()) * std::cos(a) + (p.y() - apex) * std::sin(a);
+    }
   }
   return NAN;
 }
@@ -65,14 +74,31 @@ std::vector<Case> cases() {
            700 - std::sqrt(665.0 * 665.0 - 365.0 * 365.0)}};
 }
 
+// Conical heads: half angle α in degrees, knuckle r; depth from the tangent point (closed form).
+std::vector<Case> conical_cases() {
+  std::vector<Case> out;
+  for (const auto& [degrees, knuckle] : std::vector<std::pair<double, double>>{
+           {30, 60}, {30, 0}, {45, 100}, {15, 30}, {60, 0}, {75, 200}}) {
+    const double a = degrees * kPi / 180, kx = 500 - knuckle;
+    const double tx = kx + knuckle * std::cos(a), tz = knuckle * std::sin(a);
+    out.push_back(
+        {"conical", {HeadKind::conical, 2.0, 0.0, knuckle, a}, 500, tz + tx / std::tan(a)});
+  }
+  return out;
+}
+
 TEST(ExactHead, MeridiansLieOnTheirClosedForms) {
   std::mt19937 random(7);
-  for (const Case& c : cases()) {
+  std::vector<Case> all = cases();
+  for (const Case& c : conical_cases()) all.push_back(c);
+  for (const Case& c : all) {
     SCOPED_TRACE(c.name);
     const ExactHead h = exact_head(c.preset, c.radius);
     EXPECT_EQ(h.meridian.degree(), 2);
     EXPECT_EQ(h.meridian.size(), 2 * h.arcs + 1);
-    EXPECT_EQ(h.arcs, c.preset.kind == HeadKind::torispherical ? 4 : 2);
+    const bool knuckled = c.preset.kind == HeadKind::torispherical ||
+                          (c.preset.kind == HeadKind::conical && c.preset.knuckle > 0);
+    EXPECT_EQ(h.arcs, knuckled ? 4 : 2);
     std::uniform_real_distribution<double> u(h.meridian.front(), h.meridian.back());
     double worst = 0;
     for (int k = 0; k < 20000; ++k)
@@ -110,6 +136,30 @@ TEST(ExactHead, ArcsMeetTangentially) {
   }
 }
 
+// The cone's meridian runs at α to the axis up to a cone point; its knuckle leaves the cylinder
+// vertically and meets the cone with one tangent; without a knuckle the cone meets the cylinder
+// at the kink α.
+TEST(ExactHead, ConicalHeadsMeetTheirConeAtItsAngle) {
+  for (const Case& c : conical_cases()) {
+    const double a = c.preset.half_angle;
+    SCOPED_TRACE(a * 180 / kPi);
+    const ExactHead h = exact_head(c.preset, c.radius);
+    const double apex = h.arcs / 2.0, e = 1e-9;
+    const Eigen::Vector2d up = h.meridian.derivatives(apex - e, 1)[1].normalized();
+    const Eigen::Vector2d down = h.meridian.derivatives(apex + e, 1)[1].normalized();
+    EXPECT_NEAR(std::atan2(-up.x(), up.y()), a, 1e-9);       // towards the axis at α
+    EXPECT_NEAR(std::atan2(-down.x(), -down.y()), a, 1e-9);  // the mirrored side
+    const Eigen::Vector2d start = h.meridian.derivatives(h.meridian.front(), 1)[1].normalized();
+    const double kink = c.preset.knuckle > 0 ? 0.0 : a;
+    EXPECT_NEAR(std::atan2(-start.x(), start.y()), kink, 1e-9);
+    if (c.preset.knuckle > 0) {  // knuckle to cone, tangent
+      const Eigen::Vector2d before = h.meridian.derivatives(1 - e, 1)[1].normalized();
+      const Eigen::Vector2d after = h.meridian.derivatives(1 + e, 1)[1].normalized();
+      EXPECT_NEAR(before.x() * after.y() - before.y() * after.x(), 0, 1e-7);
+    }
+  }
+}
+
 TEST(ExactHead, RevolvesIntoABiquadraticHead) {
   const ExactHead h = exact_head(torispherical_100_6(500), 500);
   const VesselSurfaces s = vessel_surfaces(h.meridian, 1500);
@@ -123,6 +173,10 @@ TEST(ExactHead, BadParametersAreRefused) {
   EXPECT_THROW(exact_head({HeadKind::torispherical, 2.0, 1000, 500}, 500), InputError);
   EXPECT_THROW(exact_head({HeadKind::ellipsoidal, 0.0}, 500), InputError);
   EXPECT_THROW(exact_head({}, -1), InputError);
+  EXPECT_THROW(exact_head({HeadKind::conical, 2.0, 0.0, 60, 0.0}, 500), InputError);
+  EXPECT_THROW(exact_head({HeadKind::conical, 2.0, 0.0, 60, kPi / 2}, 500), InputError);
+  EXPECT_THROW(exact_head({HeadKind::conical, 2.0, 0.0, 500, 0.5}, 500), InputError);
+  EXPECT_THROW(exact_head({HeadKind::conical, 2.0, 0.0, -1, 0.5}, 500), InputError);
 }
 
 }  // namespace

@@ -202,6 +202,46 @@ TEST(HeadMeasures, MetalVolumes) {
     }
 }
 
+// π∫x² dz of the arc of radius t about a centre at x = cx whose normal turns from φ0 to φ1
+// (composite Simpson): the offset's fan at a corner of the meridian.
+double fan_volume(double cx, double t, double phi0, double phi1) {
+  const int n = 20000;
+  double sum = 0;
+  for (int i = 0; i <= n; ++i) {
+    const double phi = phi0 + (phi1 - phi0) * i / n, x = cx + t * std::cos(phi);
+    const double w = (i == 0 || i == n ? 1.0 : i % 2 ? 4.0 : 2.0) * (phi1 - phi0) / (3.0 * n);
+    sum += w * kPi * x * x * t * std::cos(phi);
+  }
+  return sum;
+}
+
+// Conical heads against the meridian integral; the offset adds the fans at its corners: the apex
+// (normal from α to 90°) and, without a knuckle, the junction (normal from 0 to α).
+TEST(HeadMeasures, ConicalHeadsAgreeWithTheMeridianIntegral) {
+  const double cases[][2] = {{30, 60}, {30, 0}, {45, 100}, {10, 20}, {60, 0}, {80, 300}};
+  for (const auto& [degrees, knuckle] : cases) {
+    const double a = degrees * kPi / 180;
+    const HeadPreset preset{HeadKind::conical, 2.0, 0.0, knuckle, a};
+    const HeadShape shape = head_shape(preset, 500);
+    const HeadMeasures m = conical_head_measures(500, a, knuckle);
+    const HeadMeasures n = integrated(shape, 0.0);
+    EXPECT_LT(relative(m.volume, n.volume), 1e-11) << degrees << " " << knuckle;
+    EXPECT_LT(relative(m.area, n.area), 1e-11) << degrees << " " << knuckle;
+    EXPECT_EQ(head_measures(preset, 500).volume, m.volume);
+    for (const double t : {0.5, 10.0, 80.0}) {
+      double outer = integrated(shape, t).volume + fan_volume(0.0, t, a, kPi / 2);
+      if (knuckle == 0) outer += fan_volume(500, t, 0, a);
+      EXPECT_LT(relative(conical_metal_volume(500, a, knuckle, t), outer - n.volume), 1e-10)
+          << degrees << " " << knuckle << " t = " << t;
+      EXPECT_EQ(head_metal_volume(preset, 500, t), conical_metal_volume(500, a, knuckle, t));
+    }
+  }
+  // A plain cone: V = π R³ cot α / 3, A = π R²/sin α.
+  EXPECT_NEAR(conical_head_measures(500, kPi / 6, 0).volume, kPi * 1.25e8 * std::sqrt(3.0) / 3,
+              1e-6);
+  EXPECT_NEAR(conical_head_measures(500, kPi / 6, 0).area, kPi * 250000 * 2, 1e-6);
+}
+
 TEST(HeadMeasures, PresetsDispatchToTheirHeads) {
   EXPECT_EQ(head_measures(kHemisphere, 500).volume, hemispherical_head_measures(500).volume);
   EXPECT_EQ(head_measures(kTwoToOne, 500).area, ellipsoidal_head_measures(500, 250).area);

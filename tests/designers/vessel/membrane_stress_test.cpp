@@ -145,6 +145,28 @@ TEST(MembraneStress, ExtremaBetweenGridAnglesAreLocated) {
   }
 }
 
+// On a cone of half apex angle α, r2 = ρ / cos α and the meridian is straight:
+// σθ = p ρ/(t cos α), σφ = σθ/2, both 0 at the apex (Timoshenko & Woinowsky-Krieger, §14.1).
+TEST(MembraneStress, ConeStressesAreTheClosedForm) {
+  for (const double knuckle : {0.0, 60.0}) {
+    const double a = std::numbers::pi / 6;
+    const HeadShape shape = head_shape({HeadKind::conical, 2.0, 0.0, knuckle, a}, 500);
+    const StressProfile s = membrane_stresses(shape.profile, kLoad, 91);
+    const double tangent_z = knuckle * std::sin(a);
+    int cone_samples = 0;
+    for (const StressSample& k : s.samples) {
+      if (k.on_cylinder || k.z < tangent_z + 1e-6) continue;
+      ++cone_samples;
+      const double hoop = kLoad.pressure * k.rho / (kLoad.thickness * std::cos(a));
+      EXPECT_NEAR(k.hoop_stress, hoop, 1e-9 * 100) << k.theta;
+      EXPECT_NEAR(k.meridional_stress, hoop / 2, 1e-9 * 100) << k.theta;
+    }
+    EXPECT_GT(cone_samples, 30);
+    EXPECT_EQ(s.samples.back().hoop_stress, 0.0);  // the apex
+    EXPECT_EQ(s.samples.back().meridional_stress, 0.0);
+  }
+}
+
 TEST(MembraneStress, BadLoad) {
   const PolarFunction f = head_shape({}, 500).profile;
   EXPECT_THROW(membrane_stresses(f, {500, 1500, 0, 2}), InputError);

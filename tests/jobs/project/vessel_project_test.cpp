@@ -147,9 +147,11 @@ TEST(VesselProject, BadValuesNameFileLineAndAttribute) {
       {vessel(kVessel, "<head preset=\"torispherical\" crown=\"400\" knuckle=\"60\"/>\n"),
        "t.xml:3: <head> attribute 'crown': expected a crown radius at least the vessel radius 500 "
        "mm, got '400'"},
-      {vessel(kVessel, "<head preset=\"conical\"/>\n"),
+      {vessel(kVessel, "<head preset=\"flat\"/>\n"),
        "t.xml:3: <head> attribute 'preset': expected one of "
-       "hemispherical|ellipsoidal|torispherical, got 'conical'"},
+       "hemispherical|ellipsoidal|torispherical|conical, got 'flat'"},
+      {vessel(kVessel, "<head preset=\"conical\"/>\n"),
+       "t.xml:3: <head> attribute 'half-angle': expected a number (attribute is missing)"},
       {vessel(kVessel, "<head preset=\"hemispherical\" targets=\"0\"/>\n"),
        "t.xml:3: <head> attribute 'targets': expected a number of curvature targets in [1, 20000], "
        "got '0'"},

@@ -94,7 +94,7 @@ std::vector<ExampleRun> every_example() {
     runs.push_back({"cam " + cam, {"cam", (examples / "cams" / (cam + ".xml")).string()}});
   for (const char* vessel :
        {"hemispherical", "ellipsoidal_2_1", "torispherical_100_6", "custom_curvature",
-        "torispherical_100_6_exact", "minimum_stress_2_1_depth"})
+        "torispherical_100_6_exact", "minimum_stress_2_1_depth", "toriconical_30"})
     runs.push_back({std::string("vessel ") + vessel,
                     {"vessel", (examples / "vessels" / (std::string(vessel) + ".xml")).string()}});
   for (const char* scan : {"sphere_like_fit.xml", "lobed_profile_fit.xml", "sphere_like.xyz",

@@ -658,7 +658,7 @@ TEST_F(StudioTest, EveryExampleShowsAndExportsWhatTheCliWrites) {
     examples.push_back({"cam", kExamples / "cams" / (std::string(cam) + ".xml")});
   for (const char* vessel :
        {"hemispherical", "ellipsoidal_2_1", "torispherical_100_6", "custom_curvature",
-        "torispherical_100_6_exact", "minimum_stress_2_1_depth"})
+        "torispherical_100_6_exact", "minimum_stress_2_1_depth", "toriconical_30"})
     examples.push_back({"vessel", kExamples / "vessels" / (std::string(vessel) + ".xml")});
   for (const char* scan : {"sphere_like_fit.xml", "lobed_profile_fit.xml", "sphere_like.xyz",
                            "vase.xyz", "lobed_profile.xyz"})
