@@ -17,21 +17,6 @@ namespace {
 
 constexpr double kHalfPi = std::numbers::pi / 2;
 
-// ∫ √(R² + R'²) dθ over [a, b] by 4-point Gauss–Legendre (Abramowitz & Stegun 25.4.29).
-double arc_length(const PolarFunction& R, double a, double b) {
-  static const double x[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563,
-                              0.8611363115940526};
-  static const double w[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461,
-                              0.3478548451374538};
-  double sum = 0.0;
-  for (int i = 0; i < 4; ++i) {
-    double d[2];
-    R.derivatives(0.5 * (a + b) + 0.5 * (b - a) * x[i], 1, d);
-    sum += w[i] * std::hypot(d[0], d[1]);
-  }
-  return 0.5 * (b - a) * sum;
-}
-
 void check_positive(double value, const char* name, const char* unit) {
   if (!(value > 0.0 && std::isfinite(value)))
     throw InputError(std::string("membrane stresses: ") + name + " " + to_text(value) + " " + unit +
@@ -107,6 +92,25 @@ std::vector<double> head_angles(const PolarFunction& head, const VesselLoad& loa
 }
 
 }  // namespace
+
+// ∫ √(R² + R'²) dθ, 4-point Gauss–Legendre on each interval (Abramowitz & Stegun 25.4.29).
+double arc_length(const PolarFunction& R, double a, double b, int intervals) {
+  static const double x[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563,
+                              0.8611363115940526};
+  static const double w[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461,
+                              0.3478548451374538};
+  double sum = 0.0;
+  const double h = (b - a) / intervals;
+  for (int k = 0; k < intervals; ++k) {
+    const double lo = a + k * h;
+    for (int i = 0; i < 4; ++i) {
+      double d[2];
+      R.derivatives(lo + 0.5 * h * (1 + x[i]), 1, d);
+      sum += 0.5 * h * w[i] * std::hypot(d[0], d[1]);
+    }
+  }
+  return sum;
+}
 
 // r1 = 1/κ (DESIGN §4.4); r2 = x / n_x with the outward unit normal
 // n = (R' sin θ + R cos θ, R sin θ − R' cos θ) / √(R² + R'²).

@@ -20,6 +20,10 @@ struct PrincipalRadii {
 // (the apex) r2 takes its limit r1 for a smooth apex and 0 at a cone point.
 PrincipalRadii principal_radii(const PolarFunction& head, double theta);
 
+// The meridian's arc length ∫ √(R² + R'²) dθ over [a, b], 4-point Gauss–Legendre on each of
+// `intervals` equal parts, mm.
+double arc_length(const PolarFunction& R, double a, double b, int intervals = 1);
+
 struct MembraneForces {
   double meridional = 0.0;  // N_φ, N/mm
   double hoop = 0.0;        // N_θ, N/mm

@@ -103,8 +103,9 @@ std::vector<std::string> warnings_for(const VesselSolution& s, const VesselDesig
   return out;
 }
 
-// The head's geometry at the junction and the apex, and its membrane stresses, from out.profile.
-void analyse_head(VesselSolution& out, const VesselLoad& load) {
+// The head's geometry at the junction and the apex, its membrane stresses and the edge bending
+// at its curvature jumps (an exact head's own; else the junction's), from out.profile.
+void analyse_head(VesselSolution& out, const VesselLoad& load, double poisson) {
   double a[3], apex[2];
   out.profile.derivatives(0.0, 2, a);
   out.profile.derivatives(kPi / 2, 1, apex);
@@ -114,6 +115,13 @@ void analyse_head(VesselSolution& out, const VesselLoad& load) {
   out.junction_slope = std::atan2(a[1], a[0]);
   out.apex_slope = std::atan2(apex[1], apex[0]);
   out.stresses = membrane_stresses(out.profile, load);
+  HeadShape smooth;
+  if (!out.exact) {
+    smooth.pieces = {out.profile};
+    smooth.profile = out.profile;
+    smooth.jumps = {{0.0, 0.0, out.junction_curvature}};
+  }
+  out.edge_bending = edge_bending(out.exact ? out.exact->shape : smooth, load, poisson);
 }
 
 // The preset head itself: its exact meridian, closed-form curvature and stresses (no synthesis).
@@ -128,7 +136,7 @@ VesselSolution solve_exact_head(const VesselDesign& design, const VesselLoad& lo
   const HeadShape& shape = out.exact->shape;
   out.profile = shape.profile;
   out.curvature = piecewise_curvature(shape);
-  analyse_head(out, load);
+  analyse_head(out, load, design.poisson);
   out.warnings = warnings_for(out, design);
   return out;
 }
@@ -152,7 +160,7 @@ VesselSolution solve_curvature_design(const VesselDesign& design, const VesselLo
   out.synthesis = synthesize_profile(problem);
   out.profile = head_polar_function(out.synthesis.profile);
   out.curvature = sample_curvature(out.profile, 360);
-  analyse_head(out, load);
+  analyse_head(out, load, design.poisson);
   if (design.preset) out.preset = compare_with_preset(*design.preset, design, out.profile, load);
   out.warnings = warnings_for(out, design);
   return out;
@@ -177,7 +185,7 @@ VesselSolution solve_minimum_stress(const VesselDesign& design, const VesselLoad
   m.head = minimum_peak_stress_head(design.radius, depth, settings);
   out.profile = head_polar_function(m.head.profile);
   out.curvature = sample_curvature(out.profile, 360);
-  analyse_head(out, load);
+  analyse_head(out, load, design.poisson);
   m.stresses = head_stress_summary("minimum-stress head", out.profile, load);
   m.same_depth = standard_heads_of_depth(depth, load);
   out.minimum_stress = std::move(m);

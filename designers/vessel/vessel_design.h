@@ -11,6 +11,7 @@
 
 #include "designers/convert/polar_function.h"
 #include "designers/vessel/curvature_synthesis.h"
+#include "designers/vessel/edge_bending.h"
 #include "designers/vessel/exact_head.h"
 #include "designers/vessel/head_depth_comparison.h"
 #include "designers/vessel/head_preset.h"
@@ -50,6 +51,7 @@ struct VesselDesign {
   std::optional<double> junction_kappa;
   std::optional<CodeInputs> code;  // check the wall by ASME VIII-1 (vessel_code_check.h)
   double density = 7850.0;         // kg/m³ of the wall material (steel), for the weight
+  double poisson = 0.3;            // Poisson's ratio ν of the wall (steel), for the edge bending
 
   bool operator==(const VesselDesign&) const = default;
 };
@@ -91,6 +93,9 @@ struct VesselSolution {
   double junction_slope = 0.0;      // atan(R'(0)/R(0)), rad: the kink against the cylinder
   double apex_slope = 0.0;          // atan(R'(π/2)/R(π/2)), rad: non-zero is a cone point
   StressProfile stresses;           // of the designed head (the revolved A half) and cylinder
+  // At the head's curvature jumps on the A half by edge theory: an exact head's junction and
+  // knuckle joints, another head's junction (edge_bending.h).
+  std::vector<EdgeBending> edge_bending;
   std::optional<PresetComparison> preset;
   std::optional<VesselCodeCheck> code;     // with the design's code inputs
   std::optional<VesselMeasures> measures;  // an exact head: volumes, areas, weight

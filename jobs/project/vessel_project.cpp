@@ -201,6 +201,8 @@ double read_vessel(const XMLElement* e, const XmlElementReader* root, Reader& re
     d.length = r.positive("length");
     d.pressure = r.positive("pressure");
     d.density = r.positive("density", d.density);
+    d.poisson = r.positive("poisson", d.poisson, true);
+    if (!(d.poisson < 0.5)) r.fail("poisson", "a Poisson's ratio in [0, 0.5)");
     const std::vector<const XMLElement*> curvatures = r.children("curvature");
     if (curvatures.size() > kMaxCurvatureTargets)
       throw InputError(r.where() + ": " + std::to_string(curvatures.size()) +
@@ -308,6 +310,7 @@ std::string vessel_project_xml(const VesselProject& p) {
   attribute(out, "thickness", d.thickness);
   attribute(out, "pressure", d.pressure);
   attribute(out, "density", d.density);
+  attribute(out, "poisson", d.poisson);
   out << ">\n";
   if (d.code) {
     out << "    <code";

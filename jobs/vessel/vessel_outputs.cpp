@@ -175,6 +175,25 @@ std::string html_report(const VesselJobResult& r, const VesselOutputOptions& o, 
   html.add_heading("Membrane stresses");
   html.add_svg(svgs.at("stress.svg"),
                "Meridional σφ and hoop σθ along the meridian; shaded: compressive hoop stress.");
+  if (!s.edge_bending.empty()) {
+    html.add_heading("Edge bending");
+    html.add_paragraph(
+        "Bending at the curvature jumps by thin-shell edge theory (Geckeler's approximation, "
+        "Timoshenko & Woinowsky-Krieger §§ 130–134): edge shear Q0 = p r2 |Δκ| / (8β), "
+        "β = [3(1 − ν²)]^¼ / √(r2 t), peak moment 0.3224 Q0/β at π/(4β) from the joint, ν = " +
+        format_trimmed(r.solved.design.poisson, 3) +
+        ". Approximate where the decay length π/β exceeds a piece meeting there.");
+    std::vector<std::vector<std::string>> rows;
+    for (const EdgeBending& e : s.edge_bending)
+      rows.push_back(
+          {format_trimmed(e.theta * kDegreesPerRadian, 4), number_text(e.kappa_jump),
+           format_trimmed(e.shear, 4), format_trimmed(e.bending_stress, 4),
+           format_trimmed(e.max_meridional_stress, 4), format_trimmed(e.hoop_stress_at_joint, 4),
+           format_trimmed(e.decay_length, 4) + (e.approximate() ? " (approximate)" : "")});
+    html.add_table({"joint θ [deg]", "Δκ [1/mm]", "Q0 [N/mm]", "σ bending [MPa]",
+                    "σφ membrane + bending [MPa]", "σθ at joint [MPa]", "π/β [mm]"},
+                   rows);
+  }
   html.add_heading("NURBS profile");
   html.add_svg(svgs.at("profile.svg"), "The exported profile with its control polygon.");
   if (c.conversion) {

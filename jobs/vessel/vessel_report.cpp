@@ -151,6 +151,27 @@ json minimum_stress_json(const VesselDesign& d, const MinimumStressDesign& m) {
           {"peak_below_best_standard_pct", 100 * (1 - m.stresses.peak_stress / best)}};
 }
 
+json edge_bending_json(const std::vector<EdgeBending>& edges) {
+  json out = json::array();
+  for (const EdgeBending& e : edges)
+    out.push_back({{"theta_deg", e.theta * kDegreesPerRadian},
+                   {"r2_mm", e.r2},
+                   {"kappa_jump_per_mm", e.kappa_jump},
+                   {"beta_per_mm", e.beta},
+                   {"shear_n_per_mm", e.shear},
+                   {"max_moment_n", e.max_moment},
+                   {"max_moment_offset_mm", e.max_moment_offset},
+                   {"bending_stress_mpa", e.bending_stress},
+                   {"hoop_bending_stress_mpa", e.hoop_bending_stress},
+                   {"meridional_membrane_stress_mpa", e.meridional_membrane_stress},
+                   {"hoop_stress_at_joint_mpa", e.hoop_stress_at_joint},
+                   {"max_meridional_stress_mpa", e.max_meridional_stress},
+                   {"decay_length_mm", e.decay_length},
+                   {"shorter_piece_mm", e.shorter_piece},
+                   {"approximate", e.approximate()}});
+  return out;
+}
+
 json code_check_json(const CodeCheck& c) {
   return {{"required_thickness_mm", c.required_thickness},
           {"thickness_formula", c.thickness_formula},
@@ -232,6 +253,7 @@ json vessel_report_fields(const VesselSolveStage& r, const VesselConversionStage
                      {"far_head", surface_json(v.far_head)}};
   }
   j["stresses"] = stresses_json(s.stresses);
+  j["edge_bending"] = edge_bending_json(s.edge_bending);
   j["code"] = s.code ? code_json(d, *s.code) : json(nullptr);
   j["measures"] = s.measures ? measures_json(*s.measures) : json(nullptr);
   j["preset"] = s.preset ? preset_json(r) : json(nullptr);

@@ -5,10 +5,11 @@
 #include <filesystem>
 #include <iostream>
 
+#include "jobs/vessel/vessel_outputs.h"
 #include "src/error.h"
+#include "src/units.h"
 #include "ui/cli/commands.h"
 #include "ui/cli/validators.h"
-#include "jobs/vessel/vessel_outputs.h"
 
 namespace polarform::cli {
 
@@ -82,6 +83,12 @@ void run(const VesselArgs& a) {
     std::printf("YES, down to %.4g MPa\n", stresses["head"]["min_hoop_stress_mpa"].get<double>());
   else
     std::printf("none\n");
+  for (const EdgeBending& e : solution.edge_bending)
+    std::printf(
+        "edge bending at theta %.4g deg: meridional %.4g MPa (bending %.4g of it), "
+        "hoop %.4g MPa at the joint%s\n",
+        to_degrees(e.theta), e.max_meridional_stress, e.bending_stress, e.hoop_stress_at_joint,
+        e.approximate() ? " (approximate: short piece)" : "");
   if (const auto& code = solution.code) {
     std::printf("ASME VIII-1: MAWP %.4g MPa; required thickness shell %.4g mm (%s)", code->mawp,
                 code->shell.required_thickness, code->shell.thickness_formula.c_str());
