@@ -13,8 +13,8 @@
 
 namespace polarform {
 
-// The rule "never more coefficients than the data can determine": m <= n / 10.
-constexpr int kSamplesPerCoefficient = 10;
+// The rule "never more coefficients than the data can determine": m <= n / 4.
+constexpr int kSamplesPerCoefficient = 4;
 // Larger clouds choose their net on an evenly strided subsample of this many samples.
 constexpr std::size_t kSelectionSamples = 100000;
 // A candidate must lower GCV by this fraction to count as an improvement.

@@ -160,7 +160,7 @@ void add_fit_command(CLI::App& app) {
                   "p[,q]: degrees of F along u (φ or z) and v (θ); a curve uses the last");
   cmd->add_option("--ctrl", args->ctrl,
                   "n[,m]: control values of F along u and v (default: chosen by GCV over net "
-                  "sizes, at most one coefficient per 10 points)");
+                  "sizes, at most one coefficient per 4 points)");
   cmd->add_option("--tol", args->tol,
                   "mm: refine F until the distance measure meets this (instead of --ctrl); a "
                   "tolerance below the data's noise estimate is refused");

@@ -59,7 +59,7 @@ bool draw_fit_options(FitSettings& s) {
     changed |= ImGui::Checkbox("net chosen by the data", &s.automatic_net);
     help_marker(
         "Nets grown until generalised cross-validation stops improving (the residual reaches the "
-        "noise), at most one coefficient per 10 points (as polarform fit without --ctrl).");
+        "noise), at most one coefficient per 4 points (as polarform fit without --ctrl).");
     if (!s.automatic_net) {
       changed |= input_int("control values u", s.size_u, 2, 200);
       changed |= input_int("control values v", s.size_v, 2, 200);

@@ -52,12 +52,12 @@ TEST(FitOutputs, SphereLikeExampleWritesEveryFileAndASaneReport) {
   EXPECT_NEAR(o[2].get<double>(), 20.0, 0.2);
   EXPECT_EQ(j["degrees"]["F"], nlohmann::json::array({3, 3}));
   EXPECT_EQ(j["degrees"]["nurbs"], nlohmann::json::array({5, 5}));
-  // The net is the data's choice (GCV over net sizes), within one coefficient per 10 points.
+  // The net is the data's choice (GCV over net sizes), within one coefficient per 4 points.
   const auto& net = j["control_net_choice"];
   EXPECT_EQ(net["chosen_by"], "gcv over net sizes");
-  EXPECT_EQ(net["max_coefficients"], 300);
+  EXPECT_EQ(net["max_coefficients"], 750);
   EXPECT_EQ(j["control_net"]["F"], net["net"]);
-  EXPECT_LE(j["control_net"]["F"][0].get<int>() * j["control_net"]["F"][1].get<int>(), 300);
+  EXPECT_LE(j["control_net"]["F"][0].get<int>() * j["control_net"]["F"][1].get<int>(), 750);
   EXPECT_GE(net["candidates"].size(), 3u);
   EXPECT_FALSE(j["revolution"]["rotational"].get<bool>());
   EXPECT_LT(j["revolution"]["f_test"]["p_value"].get<double>(), 1e-3);
