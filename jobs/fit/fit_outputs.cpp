@@ -219,6 +219,14 @@ json fit_report_fields(const FitJobResult& r) {
     const FrameEstimate& fr = f.frame();
     j["quadric"] = fr.quadric ? quadric_json(*fr.quadric) : json(nullptr);
     j["frame"] = frame_json(fr.frame, fr.reason);
+    json candidates = json::array();
+    for (const FrameCandidate& c : f.frame_candidates) {
+      json e{{"name", c.name}, {"origin", vec(c.origin)}, {"axis", vec(c.axis)}, {"how", c.how}};
+      e["rms_mm"] = c.rms >= 0.0 ? json(c.rms) : json(nullptr);
+      if (!c.failure.empty()) e["failure"] = c.failure;
+      candidates.push_back(std::move(e));
+    }
+    j["frame_candidates"] = std::move(candidates);
     if (const auto* sphere = std::get_if<SphericalFit>(&f.fit)) {
       const SphericalFit& s = *sphere;
       j["closed"] = s.closed;

@@ -61,6 +61,12 @@ TEST(FitOutputs, SphereLikeExampleWritesEveryFileAndASaneReport) {
   EXPECT_GE(net["candidates"].size(), 3u);
   EXPECT_FALSE(j["revolution"]["rotational"].get<bool>());
   EXPECT_LT(j["revolution"]["f_test"]["p_value"].get<double>(), 1e-3);
+  // The quadric frame and the least-squares centre were both fitted; the smaller rms was kept.
+  ASSERT_GE(j["frame_candidates"].size(), 2u);
+  double best = 1e300;
+  for (const auto& c : j["frame_candidates"])
+    if (!c["rms_mm"].is_null()) best = std::min(best, c["rms_mm"].get<double>());
+  EXPECT_DOUBLE_EQ(best, j["error_mm"]["rms"].get<double>());
   const auto& e = j["error_mm"];
   EXPECT_EQ(e["count"], 3000);
   // Noise 0.02 mm per coordinate: the error is of that order and its statistics are ordered.
