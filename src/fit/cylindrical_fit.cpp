@@ -80,7 +80,7 @@ CylindricalFit fit_cylindrical(const Eigen::Matrix3Xd& points, const Cylindrical
                             1,
                             base.azimuth().arcs()};
   TrimmedFit trimmed = fit_trimmed(
-      samples, local, space, with_progress_range(opt.function, 0.15, 0.95),
+      std::move(samples), local, space, with_progress_range(opt.function, 0.15, 0.95),
       [&base](const BSplineSurface& F) { return ProductGeometry::cylindrical(F, base); },
       outliers.points, opt.model);
   FunctionFitResult& fit = trimmed.fit;

@@ -99,7 +99,7 @@ PolarCurveFit fit_polar_curve(const Eigen::Matrix2Xd& points, const PolarFitOpti
       0.0, 1.0, base.curve().front(), base.curve().back(), range.closed, false, 0,
       0,   1,   base.arcs()};
   TrimmedFit trimmed = fit_trimmed(
-      samples, local3, space, fo,
+      std::move(samples), local3, space, fo,
       [&base](const BSplineSurface& F) { return ProductGeometry::polar(F, base); }, outliers.points,
       opt.model);
   FunctionFitResult& fit = trimmed.fit;

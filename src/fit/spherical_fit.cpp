@@ -126,7 +126,7 @@ SphericalFit fit_spherical(const Eigen::Matrix3Xd& points, const SphericalFitOpt
                             base.meridian().arcs(),
                             base.azimuth().arcs()};
   TrimmedFit trimmed = fit_trimmed(
-      samples, local, space, with_progress_range(opt.function, 0.15, 0.95),
+      std::move(samples), local, space, with_progress_range(opt.function, 0.15, 0.95),
       [&base](const BSplineSurface& F) { return ProductGeometry::spherical(F, base); },
       outliers.points, opt.model);
   FunctionFitResult& fit = trimmed.fit;

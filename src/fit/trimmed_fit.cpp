@@ -5,9 +5,9 @@
 
 namespace polarform {
 
-TrimmedFit fit_trimmed(const Samples& samples, const Eigen::Matrix3Xd& local,
-                       const FunctionSpace& space, const FunctionFitOptions& options,
-                       const GeometryOf& geometry, const std::vector<Eigen::Index>& leave_out,
+TrimmedFit fit_trimmed(Samples samples, const Eigen::Matrix3Xd& local, const FunctionSpace& space,
+                       const FunctionFitOptions& options, const GeometryOf& geometry,
+                       const std::vector<Eigen::Index>& leave_out,
                        const ModelChoiceOptions& model) {
   const int threads = options.threads;
   TrimmedFit r;
@@ -17,7 +17,7 @@ TrimmedFit fit_trimmed(const Samples& samples, const Eigen::Matrix3Xd& local,
     r.revolution = std::move(c.revolution);
     r.fit = fit_function(samples, c.space, c.options,
                          distance_measure(geometry, local, samples, threads, &r.unconverged));
-    r.kept = samples;
+    r.kept = std::move(samples);
     return r;
   }
   std::vector<char> out(samples.size(), 0);

@@ -28,10 +28,11 @@ struct TrimmedFit {
 
 // Fits the samples (one per column of `local`, the points in the geometry's frame) but those
 // listed in `leave_out` (increasing indices), with the model choose_model picks from the kept
-// samples.
-TrimmedFit fit_trimmed(const Samples& samples, const Eigen::Matrix3Xd& local,
-                       const FunctionSpace& space, const FunctionFitOptions& options,
-                       const GeometryOf& geometry, const std::vector<Eigen::Index>& leave_out,
+// samples. The samples are taken by value: without outliers they become `kept` without a copy
+// (240 MB at 10^7 points).
+TrimmedFit fit_trimmed(Samples samples, const Eigen::Matrix3Xd& local, const FunctionSpace& space,
+                       const FunctionFitOptions& options, const GeometryOf& geometry,
+                       const std::vector<Eigen::Index>& leave_out,
                        const ModelChoiceOptions& model = {});
 
 }  // namespace polarform

@@ -41,20 +41,17 @@ void expect_noise_level_fit(const SphericalFit& f, double sigma, std::size_t n) 
   EXPECT_GE(net.candidates.size(), 3u);
 }
 
-TEST(NetSelection, NoisySphereWithDefaultsFitsAtTheNoiseLevel) {
-  const double sigma = 0.02;
-  const Eigen::Matrix3Xd p = ellipsoid(25, 25, 25, 20000, sigma, 61);
-  const SphericalFit f = fit_spherical(p);
-  expect_noise_level_fit(f, sigma, 20000);
-  EXPECT_TRUE(f.report.revolution.rotational) << f.report.revolution.reason;
-}
-
-TEST(NetSelection, NoisyEllipsoidWithDefaultsFitsAtTheNoiseLevel) {
-  const double sigma = 0.01;
-  const Eigen::Matrix3Xd p = ellipsoid(30, 24, 18, 20000, sigma, 71);
-  const SphericalFit f = fit_spherical(p);
-  expect_noise_level_fit(f, sigma, 20000);
-  EXPECT_FALSE(f.report.revolution.rotational) << f.report.revolution.reason;
+TEST(NetSelection, NoisySphereAndEllipsoidWithDefaultsFitAtTheNoiseLevel) {
+  struct Case {
+    double a, b, c, sigma;
+    unsigned seed;
+    bool rotational;
+  };
+  for (const Case& k : {Case{25, 25, 25, 0.02, 61, true}, Case{30, 24, 18, 0.01, 71, false}}) {
+    const SphericalFit f = fit_spherical(ellipsoid(k.a, k.b, k.c, 20000, k.sigma, k.seed));
+    expect_noise_level_fit(f, k.sigma, 20000);
+    EXPECT_EQ(f.report.revolution.rotational, k.rotational) << f.report.revolution.reason;
+  }
 }
 
 TEST(NetSelection, ToleranceBelowTheNoiseIsRefusedWithTheNumbers) {

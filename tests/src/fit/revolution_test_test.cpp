@@ -106,14 +106,18 @@ TEST(RevolutionTest, AskedModesOverrideTheTest) {
   EXPECT_EQ(no.surface.degree_v(), 5);
 }
 
+SphericalFit fit_about_z(const Eigen::Matrix3Xd& p) {
+  SphericalFitOptions o;
+  o.frame.origin = Eigen::Vector3d::Zero();
+  o.frame.axis = Eigen::Vector3d::UnitZ();
+  return fit_spherical(p, o);
+}
+
 TEST(RevolutionTest, NoisySphereIsAnExactSphere) {
   Eigen::Matrix3Xd p = test::spherical_cloud([](double, double) { return 25.0; }, 20000, 0.2,
                                              kPi - 0.2, 0.0, 2 * kPi, 47);
   test::add_noise(p, 0.01, 48);
-  SphericalFitOptions o;
-  o.frame.origin = Eigen::Vector3d::Zero();
-  o.frame.axis = Eigen::Vector3d::UnitZ();
-  const SphericalFit f = fit_spherical(p, o);
+  const SphericalFit f = fit_about_z(p);
   EXPECT_TRUE(f.report.revolution.rotational) << f.report.revolution.reason;
   EXPECT_EQ(f.surface.degree_v(), 2);
   for (double u = f.surface.front_u(); u <= f.surface.back_u(); u += 0.05)
@@ -126,10 +130,7 @@ TEST(RevolutionTest, TriaxialEllipsoidIsNotRotational) {
                                              kPi - 0.2, 0.0, 2 * kPi, 49);
   p.row(0) *= 30.0, p.row(1) *= 25.0, p.row(2) *= 20.0;
   test::add_noise(p, 0.01, 50);
-  SphericalFitOptions o;
-  o.frame.origin = Eigen::Vector3d::Zero();
-  o.frame.axis = Eigen::Vector3d::UnitZ();
-  const SphericalFit f = fit_spherical(p, o);
+  const SphericalFit f = fit_about_z(p);
   EXPECT_FALSE(f.report.revolution.rotational) << f.report.revolution.reason;
   EXPECT_GT(f.surface.degree_v(), 2);
 }
