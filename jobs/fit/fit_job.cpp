@@ -51,6 +51,7 @@ RotationalFitOptions rotational_options(const FitJobOptions& o) {
   ro.spherical.frame.axis = ro.cylindrical.frame.axis = o.axis;
   ro.spherical.closure = ro.cylindrical.closure = o.closure;
   ro.spherical.base_kind = ro.cylindrical.base_kind = o.base;
+  ro.spherical.model.revolution = ro.cylindrical.model.revolution = o.revolution;
   if (o.pole) ro.spherical.north = ro.spherical.south = *o.pole;
   if (o.method == FitJobMethod::spherical) ro.method = FitMethod::spherical;
   if (o.method == FitJobMethod::cylindrical) ro.method = FitMethod::cylindrical;
@@ -86,6 +87,7 @@ ProfileFit fit_profile(const FitInput& in, const CloudPlane& plane, const FitJob
   po.function = function_options(o);
   po.closure = o.closure;
   po.base_kind = o.base;
+  po.model.revolution = o.revolution;
   po.outliers = outlier_policy(o);
   if (o.center) po.centre = plane.frame.to_local(*o.center).head<2>();
   const Eigen::Matrix2Xd local = plane.frame.to_local(in.points).topRows(2);
@@ -143,6 +145,7 @@ FitJobOptions fit_job_options(const FitProject& p) {
   o.fairness = p.fairness;
   o.fairness_weight = p.fairness_weight;
   o.base = p.base;
+  o.revolution = p.revolution;
   return o;
 }
 

@@ -39,6 +39,8 @@ struct FitJobOptions {
   FairnessOptions::Mode fairness = FairnessOptions::Mode::relative;  // how λ is chosen
   double fairness_weight = 1e-7;  // λ (fixed) or its scale-free weight (relative); gcv: unused
   ArcKind base = ArcKind::rqb;    // the base circles' arcs
+  RevolutionMode revolution =
+      RevolutionMode::automatic;  // F constant around the axis: test / force
   int threads = 2;
   ProgressFn read_progress;  // fraction of the file read
   ProgressFn fit_progress;   // fraction of the fit done (restarts when auto tries a second method)

@@ -35,6 +35,41 @@ json stats(const ErrorStats& e) {
               {"p95", e.p95}, {"p99", e.p99},   {"count", e.count}};
 }
 
+// How F's control net was chosen: GCV over net sizes (every candidate), or given / refined.
+json net_json(const NetSelection& n) {
+  json candidates = json::array();
+  for (const NetCandidate& c : n.candidates)
+    candidates.push_back({{"net", json::array({c.size_u, c.size_v})},
+                          {"coefficients", c.coefficients},
+                          {"rms_mm", c.rms},
+                          {"gcv", c.gcv}});
+  return json{{"chosen_by", n.automatic ? "gcv over net sizes" : "given net or tolerance"},
+              {"noise_estimate_mm", n.noise},
+              {"noise_reached", n.noise_reached},
+              {"samples_used", n.samples},
+              {"rule", "at most one coefficient per " + std::to_string(kSamplesPerCoefficient) +
+                           " samples"},
+              {"max_coefficients", n.max_coefficients},
+              {"net", json::array({n.size_u, n.size_v})},
+              {"stopped", n.stop},
+              {"candidates", std::move(candidates)}};
+}
+
+// Whether F was made constant around the axis, and the F-test behind it.
+json revolution_json(const RevolutionTest& t) {
+  json j{{"mode", revolution_word(t.mode)}, {"rotational", t.rotational}, {"reason", t.reason}};
+  if (t.tested)
+    j["f_test"] = {{"samples", t.samples},
+                   {"coefficients", json::array({t.params_rotational, t.params_full})},
+                   {"rms_mm", json::array({t.rms_rotational, t.rms_full})},
+                   {"gcv", json::array({t.gcv_rotational, t.gcv_full})},
+                   {"f_statistic", t.f_statistic},
+                   {"threshold", t.threshold},
+                   {"p_value", t.p_value},
+                   {"level", kRevolutionAlpha}};
+  return j;
+}
+
 json frame_json(const LocalFrame& f, const std::string& reason) {
   return json{{"origin", vec(f.origin)},
               {"i", vec(f.axes.col(0))},
@@ -184,6 +219,14 @@ json fit_report_fields(const FitJobResult& r) {
     const FrameEstimate& fr = f.frame();
     j["quadric"] = fr.quadric ? quadric_json(*fr.quadric) : json(nullptr);
     j["frame"] = frame_json(fr.frame, fr.reason);
+    json candidates = json::array();
+    for (const FrameCandidate& c : f.frame_candidates) {
+      json e{{"name", c.name}, {"origin", vec(c.origin)}, {"axis", vec(c.axis)}, {"how", c.how}};
+      e["rms_mm"] = c.rms >= 0.0 ? json(c.rms) : json(nullptr);
+      if (!c.failure.empty()) e["failure"] = c.failure;
+      candidates.push_back(std::move(e));
+    }
+    j["frame_candidates"] = std::move(candidates);
     if (const auto* sphere = std::get_if<SphericalFit>(&f.fit)) {
       const SphericalFit& s = *sphere;
       j["closed"] = s.closed;
@@ -210,6 +253,8 @@ json fit_report_fields(const FitJobResult& r) {
   j["fairness_lambda"] = rep.lambda;
   j["base"] = r.base == ArcKind::quartic ? "quartic" : "rqb";
   j["refinements"] = rep.refinements;
+  j["control_net_choice"] = net_json(rep.net);
+  j["revolution"] = revolution_json(rep.revolution);
   j["error_mm"] = stats(rep.error);
   j["error_mm"]["unconverged_foot_points"] = rep.unconverged;
   j["error_kind"] = "true closest-point distance from each input point to the fitted geometry";

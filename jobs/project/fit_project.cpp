@@ -76,6 +76,10 @@ void read_fit(const XMLElement* e, const std::string& file, std::vector<UnknownN
   if (r.has("lambda")) p.fairness_weight = r.positive("lambda");
   p.base = r.choice("base", {"rqb", "quartic"}, "rqb") == "quartic" ? ArcKind::quartic
                                                                      : ArcKind::rqb;
+  const std::string revolution = r.choice("revolution", {"auto", "yes", "no"}, "auto");
+  p.revolution = revolution == "yes"  ? RevolutionMode::yes
+                 : revolution == "no" ? RevolutionMode::no
+                                      : RevolutionMode::automatic;
   r.collect_unknown_names(unknown);
 }
 
@@ -152,6 +156,7 @@ std::string fit_project_xml(const FitProject& p) {
   attribute(out, "fairness", fairness_word(p.fairness));
   attribute(out, "lambda", format_round_trip(p.fairness_weight));
   attribute(out, "base", p.base == ArcKind::quartic ? "quartic" : "rqb");
+  attribute(out, "revolution", revolution_word(p.revolution));
   out << "/>\n</polarform>\n";
   return out.str();
 }

@@ -14,6 +14,7 @@
 #include "jobs/project/unknown_names.h"
 #include "src/fit/function_fit.h"
 #include "src/fit/orthogonal_coordinates.h"
+#include "src/fit/revolution_test.h"
 #include "src/fit/spherical_fit.h"
 
 namespace polarform {
@@ -39,6 +40,8 @@ struct FitProject {
   FairnessOptions::Mode fairness = FairnessOptions::Mode::relative;
   double fairness_weight = 1e-7;
   ArcKind base = ArcKind::rqb;  // the base circles' arcs: RQB or quasi-uniform quartic
+  // F constant around the axis: decided by the F-test (auto), or asked for (yes / no).
+  RevolutionMode revolution = RevolutionMode::automatic;
 
   bool operator==(const FitProject&) const = default;
 };
@@ -56,7 +59,8 @@ std::filesystem::path scan_path(const FitProject& project,
 //   <fit scan="cloud.ply" method="auto|polar|spherical|cylindrical" closed="auto|yes|no"
 //        pole="none|g1|cap" degree="3,3" ctrl="12,12" tolerance="mm"
 //        tolerance-measure="max|p99|p95|rms" center="x,y,z" axis="x,y,z" skip-bad="false"
-//        reject-outliers="false" fairness="fixed|relative|gcv" lambda="1e-7" base="rqb|quartic"/>
+//        reject-outliers="false" fairness="fixed|relative|gcv" lambda="1e-7" base="rqb|quartic"
+//        revolution="auto|yes|no"/>
 // Throws InputError "file:line: <fit> attribute 'x': expected …" for bad values, and for unknown
 // attributes or elements, which UnknownNames::warn turns into warnings.
 FitProject read_fit_project(const std::filesystem::path& file, std::vector<std::string>& warnings,

@@ -69,12 +69,20 @@ CylindricalFit fit_cylindrical(const Eigen::Matrix3Xd& points, const Cylindrical
   samples.value = cc.r;
   times.sync += clock.lap();
 
-  const FunctionSpace space{0.0, 1.0, base.azimuth().curve().front(), base.azimuth().curve().back(),
-                            range.closed};
+  const FunctionSpace space{0.0,
+                            1.0,
+                            base.azimuth().curve().front(),
+                            base.azimuth().curve().back(),
+                            range.closed,
+                            false,
+                            0,
+                            0,
+                            1,
+                            base.azimuth().arcs()};
   TrimmedFit trimmed = fit_trimmed(
-      samples, local, space, with_progress_range(opt.function, 0.15, 0.95),
+      std::move(samples), local, space, with_progress_range(opt.function, 0.15, 0.95),
       [&base](const BSplineSurface& F) { return ProductGeometry::cylindrical(F, base); },
-      outliers.points);
+      outliers.points, opt.model);
   FunctionFitResult& fit = trimmed.fit;
 
   // S = (F·X, F·Y, Z) (B.3), (3.8), then global coordinates (4.6).
@@ -87,6 +95,8 @@ CylindricalFit fit_cylindrical(const Eigen::Matrix3Xd& points, const Cylindrical
   FitReport rep = make_report(fit, surface.degree_u(), surface.degree_v(), surface.size_u(),
                               surface.size_v(), trimmed.kept, threads, trimmed.unconverged, times);
   rep.outliers = std::move(outliers);
+  rep.net = std::move(trimmed.net);
+  rep.revolution = std::move(trimmed.revolution);
   rep.times.total = total.lap();
   progress(1.0);
   return CylindricalFit{std::move(surface), std::move(fit.F), std::move(base), std::move(frame),

@@ -14,6 +14,7 @@
 #include "src/fit/fit_report.h"
 #include "src/fit/function_fit.h"
 #include "src/fit/local_frame.h"
+#include "src/fit/model_choice.h"
 #include "src/fit/orthogonal_coordinates.h"
 #include "src/fit/outliers.h"
 #include "src/fit/single_valued_check.h"
@@ -30,6 +31,7 @@ inline FrameOptions most_distinct_axis() {
 
 struct CylindricalFitOptions {
   FunctionFitOptions function;  // F(u ↔ z, v ↔ θ), default bicubic
+  ModelChoiceOptions model;     // net by GCV unless given; F(u) alone when θ adds nothing
   FrameOptions frame = most_distinct_axis();
   ArcKind base_kind = ArcKind::rqb;
   AlphaRule alpha_rule = AlphaRule::minimax;

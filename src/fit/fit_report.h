@@ -8,7 +8,9 @@
 #include <cstddef>
 
 #include "src/fit/error_stats.h"
+#include "src/fit/net_selection.h"
 #include "src/fit/outliers.h"
+#include "src/fit/revolution_test.h"
 #include "src/fit/stage_times.h"
 
 namespace polarform {
@@ -26,6 +28,8 @@ struct FitReport {
   Eigen::VectorXd signed_distance;   // per input point, positive outside (away from centre/axis)
   OutlierReport outliers;            // the points left out under OutlierPolicy::reject
   std::size_t unconverged = 0;       // closest-point searches that hit their iteration limit
+  NetSelection net;                  // how F's net was chosen (net_selection.h)
+  RevolutionTest revolution;         // whether F was made constant around the axis, and why
   StageTimes times;
 };
 

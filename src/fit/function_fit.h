@@ -55,6 +55,9 @@ struct FunctionSpace {
   bool periodic_v = false;                   // closed in v (3.9)-(3.10), then clipped to [v0, v1]
   bool symmetric_v = false;                  // v breaks repeat after half the period (3.15)
   int pole_start = 0, pole_end = 0;  // rows tied at u0 / u1: 1 = G0 (3.14a), 2 = G1 (3.14)
+  // Equal base arcs along u / v: the synchronized parameter (2.7) is only C0 in the angle at their
+  // joints, so a chosen net keeps its uniform spans a multiple of them (net_selection.h).
+  int arcs_u = 1, arcs_v = 1;
 };
 
 // A single-valued curve F(u) fitted to samples (u_k, g_k) on [u0, u1], periodic when asked: the

@@ -1,6 +1,8 @@
 // True point-to-geometry distances for a whole cloud: the foot point of every point on S = F·B by
-// ProductGeometry::foot_point, started from its synchronized parameters, in parallel. The fitters'
-// error reports and the adaptive refinement are built on these.
+// ProductGeometry::foot_point, started from its synchronized parameters, in parallel; a search
+// that does not converge is restarted from the best of a coarse parameter grid around it, so only
+// points that fail from every start are counted. The fitters' error reports and the adaptive
+// refinement are built on these.
 #pragma once
 
 #include <Eigen/Core>
@@ -13,7 +15,8 @@ namespace polarform {
 
 struct PointDistances {
   Eigen::VectorXd signed_distance;  // per point, positive away from the centre / axis
-  std::size_t unconverged = 0;      // foot-point iterations that hit their limit
+  std::size_t unconverged = 0;  // foot points not found from the synchronized start nor the restart
+  std::size_t restarted = 0;    // foot points found only after the restart
 };
 
 // local: points in the geometry's local frame (3 x n; z = 0 for curves); u, v: their synchronized

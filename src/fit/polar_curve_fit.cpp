@@ -95,12 +95,13 @@ PolarCurveFit fit_polar_curve(const Eigen::Matrix2Xd& points, const PolarFitOpti
   fo.degree_u = 0;
   fo.size_u = 1;
   fo.max_size_u = 1;
-  const FunctionSpace space{0.0, 1.0, base.curve().front(), base.curve().back(), range.closed, false,
-                            false, false};
+  const FunctionSpace space{
+      0.0, 1.0, base.curve().front(), base.curve().back(), range.closed, false, 0,
+      0,   1,   base.arcs()};
   TrimmedFit trimmed = fit_trimmed(
-      samples, local3, space, fo,
-      [&base](const BSplineSurface& F) { return ProductGeometry::polar(F, base); },
-      outliers.points);
+      std::move(samples), local3, space, fo,
+      [&base](const BSplineSurface& F) { return ProductGeometry::polar(F, base); }, outliers.points,
+      opt.model);
   FunctionFitResult& fit = trimmed.fit;
 
   // Step 5: C(u) = F(u)·B(u) (2.10), then back to the input coordinates.
@@ -113,6 +114,8 @@ PolarCurveFit fit_polar_curve(const Eigen::Matrix2Xd& points, const PolarFitOpti
   FitReport rep = make_report(fit, 0, curve.degree(), 1, curve.size(), trimmed.kept, threads,
                               trimmed.unconverged, times);
   rep.outliers = std::move(outliers);
+  rep.net = std::move(trimmed.net);
+  rep.revolution = std::move(trimmed.revolution);
   rep.times.total = total.lap();
   return PolarCurveFit{std::move(curve), std::move(F), std::move(base), centre, centre_reason.str(),
                        range.closed, std::move(check), std::move(rep)};

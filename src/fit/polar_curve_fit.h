@@ -15,6 +15,7 @@
 #include "src/fit/fit_report.h"
 #include "src/fit/function_fit.h"
 #include "src/fit/local_frame.h"
+#include "src/fit/model_choice.h"
 #include "src/fit/orthogonal_coordinates.h"
 #include "src/fit/outliers.h"
 #include "src/fit/single_valued_check.h"
@@ -26,6 +27,7 @@ struct PolarFitOptions {
   // F along v: degree_v = p (default 3), size_v / tolerance / fairness / threads / progress as in
   // FunctionFitOptions; the u fields are ignored (a curve is a 1 x n function).
   FunctionFitOptions function;
+  ModelChoiceOptions model;  // net by GCV unless given; F(u) alone when θ adds nothing
   std::optional<Eigen::Vector2d> centre;
   ArcKind base_kind = ArcKind::rqb;
   AlphaRule alpha_rule = AlphaRule::minimax;

@@ -60,9 +60,98 @@ FitMethod other(FitMethod m) {
   return m == FitMethod::spherical ? FitMethod::cylindrical : FitMethod::spherical;
 }
 
+// The chosen fit against the same method in the least-squares frame (Bae 2002, §4.3 frame kept
+// as the first candidate); the smaller rms distance wins.
+RotationalFit choose_frame(RotationalFit fit, const Eigen::Matrix3Xd& points,
+                           const RotationalFitOptions& o) {
+  const bool spherical = fit.method() == FitMethod::spherical;
+  const FrameOptions& given = spherical ? o.spherical.frame : o.cylindrical.frame;
+  if ((given.origin && given.axis) || (spherical && given.origin)) return fit;
+  const FrameEstimate& used = fit.frame();
+  FrameCandidate first{given.axis || given.origin ? "given / quadric" : "quadric",
+                       used.frame.origin,
+                       used.frame.axes.col(2),
+                       used.reason,
+                       fit.report().error.rms,
+                       ""};
+  FrameCandidate second =
+      spherical ? least_squares_centre(points, used.frame.origin, used.frame.axes.col(2))
+                : least_squares_axis(points, used.frame.origin, used.frame.axes.col(2),
+                                     given.origin.has_value(), given.axis.has_value());
+  RotationalFitOptions again = o;
+  FrameOptions& f = spherical ? again.spherical.frame : again.cylindrical.frame;
+  f.origin = second.origin;
+  f.axis = second.axis;
+  if (!f.reference) f.reference = used.frame.axes.col(0);
+  Attempt b = attempt(fit.method(), points, again);
+  if (b.ok())
+    second.rms = b.rms();
+  else
+    second.failure = b.message;
+  std::ostringstream why;
+  why.precision(4);
+  const bool better = b.ok() && b.rms() < first.rms;
+  why << "; frame: " << (better ? second.name : first.name) << " (RMS distance "
+      << (better ? second.rms : first.rms) << " mm; " << (better ? first.name : second.name) << ": "
+      << (b.ok() || better ? std::to_string(better ? first.rms : second.rms) + " mm"
+                           : second.failure)
+      << ")";
+  std::vector<FrameCandidate> list{std::move(first), std::move(second)};
+  if (better) {
+    RotationalFit r = result(fit.method(), b, fit.reason + why.str());
+    std::visit(
+        [&](auto& chosen) {
+          chosen.frame.quadric = used.quadric;  // the quadric the candidates started from
+          chosen.frame.reason = list[1].how;
+        },
+        r.fit);
+    r.frame_candidates = std::move(list);
+    return r;
+  }
+  fit.reason += why.str();
+  fit.frame_candidates = std::move(list);
+  return fit;
+}
+
+RotationalFit fit_chosen_method(const Eigen::Matrix3Xd& points, const RotationalFitOptions& o,
+                                bool* undecided);
+
 }  // namespace
 
 RotationalFit fit_rotational(const Eigen::Matrix3Xd& points, const RotationalFitOptions& o) {
+  bool undecided = false;
+  RotationalFit fit = choose_frame(fit_chosen_method(points, o, &undecided), points, o);
+  if (!undecided) return fit;
+  // The quadric type did not decide the method: the other method in its least-squares frame is
+  // one more candidate.
+  RotationalFitOptions other_method = o;
+  other_method.method =
+      fit.method() == FitMethod::spherical ? FitMethod::cylindrical : FitMethod::spherical;
+  try {
+    RotationalFit alt =
+        choose_frame(fit_chosen_method(points, other_method, &undecided), points, other_method);
+    for (const FrameCandidate& c : alt.frame_candidates) {
+      fit.frame_candidates.push_back(c);
+      fit.frame_candidates.back().name = to_string(alt.method()) + " fit, " + c.name;
+    }
+    if (alt.report().error.rms < fit.report().error.rms) {
+      alt.reason = fit.reason + "; the " + to_string(alt.method()) +
+                   " fit in its best frame is closer (RMS distance " +
+                   std::to_string(alt.report().error.rms) + " mm): " + to_string(alt.method());
+      alt.frame_candidates = std::move(fit.frame_candidates);
+      return alt;
+    }
+  } catch (const InputError&) {
+  } catch (const NumericalError&) {
+  }
+  return fit;
+}
+
+namespace {
+
+RotationalFit fit_chosen_method(const Eigen::Matrix3Xd& points, const RotationalFitOptions& o,
+                                bool* undecided) {
+  *undecided = false;
   if (o.method) {
     Attempt a = attempt(*o.method, points, o);
     if (!a.ok()) std::rethrow_exception(a.error);
@@ -94,6 +183,7 @@ RotationalFit fit_rotational(const Eigen::Matrix3Xd& points, const RotationalFit
   Attempt s = attempt(FitMethod::spherical, points, o), c = attempt(FitMethod::cylindrical, points, o);
   if (!s.ok() && !c.ok()) std::rethrow_exception(s.error);
   why << " does not decide; ";
+  *undecided = true;
   if (s.ok() && c.ok()) {
     const FitMethod m = s.rms() <= c.rms() ? FitMethod::spherical : FitMethod::cylindrical;
     why << "RMS distance spherical " << s.rms() << ", cylindrical " << c.rms() << ": " << to_string(m);
@@ -105,6 +195,8 @@ RotationalFit fit_rotational(const Eigen::Matrix3Xd& points, const RotationalFit
       << (s.ok() ? c.message : s.message) << ")";
   return result(m, ok, why.str());
 }
+
+}  // namespace
 
 RotationalFit fit_rotational(const std::filesystem::path& file, const RotationalFitOptions& options,
                              const ReadOptions& read) {

@@ -11,6 +11,7 @@
 #include <variant>
 
 #include "src/fit/cylindrical_fit.h"
+#include "src/fit/frame_candidates.h"
 #include "src/fit/spherical_fit.h"
 
 namespace polarform {
@@ -27,6 +28,9 @@ struct RotationalFitOptions {
 struct RotationalFit {
   std::variant<SphericalFit, CylindricalFit> fit;
   std::string reason;
+  // Every frame tried with the chosen method, with the error its fit achieved; the fit uses the
+  // one of smallest rms (empty when origin and axis were both given).
+  std::vector<FrameCandidate> frame_candidates;
 
   FitMethod method() const;
   const NurbsSurface& surface() const;
@@ -38,7 +42,10 @@ struct RotationalFit {
 // Real ellipsoid → spherical; real elliptic cylinder or hyperboloid of one sheet → cylindrical;
 // cone, elliptic paraboloid, hyperboloid of two sheets → both, the smaller RMS distance wins. A
 // preferred fit that fails (not single-valued, tolerance not met) falls back to the other. Throws
-// the preferred method's error when both fail.
+// the preferred method's error when both fail. Unless origin and axis are both given, the chosen
+// method is then refitted in a second frame — the least-squares axis line (cylindrical; a given
+// axis keeps its direction and finds its line) or the least-squares centre (spherical; unless the
+// origin is given) — and the frame whose fit has the smaller rms distance is kept.
 RotationalFit fit_rotational(const Eigen::Matrix3Xd& points, const RotationalFitOptions& options = {});
 RotationalFit fit_rotational(const std::filesystem::path& file, const RotationalFitOptions& options = {},
                              const ReadOptions& read = {});

@@ -115,13 +115,20 @@ SphericalFit fit_spherical(const Eigen::Matrix3Xd& points, const SphericalFitOpt
 
   // Step 4: ρ = F(u, v) (3.4), closed (3.9)-(3.10) and pole conditions (3.14) as required.
   const bool cap = north == PoleTreatment::cap || south == PoleTreatment::cap;
-  const FunctionSpace space{base.meridian().curve().front(), base.meridian().curve().back(),
-                            base.azimuth().curve().front(), base.azimuth().curve().back(),
-                            range.closed, cap, pole_rows(north), pole_rows(south)};
+  const FunctionSpace space{base.meridian().curve().front(),
+                            base.meridian().curve().back(),
+                            base.azimuth().curve().front(),
+                            base.azimuth().curve().back(),
+                            range.closed,
+                            cap,
+                            pole_rows(north),
+                            pole_rows(south),
+                            base.meridian().arcs(),
+                            base.azimuth().arcs()};
   TrimmedFit trimmed = fit_trimmed(
-      samples, local, space, with_progress_range(opt.function, 0.15, 0.95),
+      std::move(samples), local, space, with_progress_range(opt.function, 0.15, 0.95),
       [&base](const BSplineSurface& F) { return ProductGeometry::spherical(F, base); },
-      outliers.points);
+      outliers.points, opt.model);
   FunctionFitResult& fit = trimmed.fit;
 
   // Step 5: S = F·B (3.5), caps, continuity, then global coordinates (4.6).
@@ -143,6 +150,8 @@ SphericalFit fit_spherical(const Eigen::Matrix3Xd& points, const SphericalFitOpt
   FitReport rep = make_report(fit, surface.degree_u(), surface.degree_v(), surface.size_u(),
                               surface.size_v(), trimmed.kept, threads, trimmed.unconverged, times);
   rep.outliers = std::move(outliers);
+  rep.net = std::move(trimmed.net);
+  rep.revolution = std::move(trimmed.revolution);
   rep.times.total = total.lap();
   progress(1.0);
   return SphericalFit{std::move(surface),

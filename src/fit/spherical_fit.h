@@ -17,6 +17,7 @@
 #include "src/fit/fit_report.h"
 #include "src/fit/function_fit.h"
 #include "src/fit/local_frame.h"
+#include "src/fit/model_choice.h"
 #include "src/fit/orthogonal_coordinates.h"
 #include "src/fit/outliers.h"
 #include "src/fit/pole_cap.h"
@@ -36,6 +37,7 @@ enum class PoleTreatment {
 
 struct SphericalFitOptions {
   FunctionFitOptions function;  // F(u ↔ φ, v ↔ θ), default bicubic
+  ModelChoiceOptions model;     // net by GCV unless given; F(u) alone when θ adds nothing
   FrameOptions frame;
   ArcKind base_kind = ArcKind::rqb;
   AlphaRule alpha_rule = AlphaRule::minimax;

@@ -5,15 +5,19 @@
 
 namespace polarform {
 
-TrimmedFit fit_trimmed(const Samples& samples, const Eigen::Matrix3Xd& local,
-                       const FunctionSpace& space, const FunctionFitOptions& options,
-                       const GeometryOf& geometry, const std::vector<Eigen::Index>& leave_out) {
+TrimmedFit fit_trimmed(Samples samples, const Eigen::Matrix3Xd& local, const FunctionSpace& space,
+                       const FunctionFitOptions& options, const GeometryOf& geometry,
+                       const std::vector<Eigen::Index>& leave_out,
+                       const ModelChoiceOptions& model) {
   const int threads = options.threads;
   TrimmedFit r;
   if (leave_out.empty()) {
-    r.fit = fit_function(samples, space, options,
+    ModelChoice c = choose_model(samples, space, options, model);
+    r.net = std::move(c.net);
+    r.revolution = std::move(c.revolution);
+    r.fit = fit_function(samples, c.space, c.options,
                          distance_measure(geometry, local, samples, threads, &r.unconverged));
-    r.kept = samples;
+    r.kept = std::move(samples);
     return r;
   }
   std::vector<char> out(samples.size(), 0);
@@ -30,7 +34,10 @@ TrimmedFit fit_trimmed(const Samples& samples, const Eigen::Matrix3Xd& local,
     kept_local.col(a++) = local.col(k);
   }
   std::size_t unconverged = 0;
-  r.fit = fit_function(kept, space, options,
+  ModelChoice c = choose_model(kept, space, options, model);
+  r.net = std::move(c.net);
+  r.revolution = std::move(c.revolution);
+  r.fit = fit_function(kept, c.space, c.options,
                        distance_measure(geometry, kept_local, kept, threads, &unconverged));
   const PointDistances all =
       point_distances(geometry(r.fit.F), local, samples.u, samples.v, threads);

@@ -22,7 +22,7 @@ struct FitArgs {
   std::string scan, out;
   // Empty: not given (the project's value, or the default).
   std::string method, closed, pole, degree, ctrl, tol, tol_measure, center, axis;
-  std::string fairness, lambda, base;
+  std::string fairness, lambda, base, revolution;
   std::string threads = "2";
   bool skip_bad = false, reject_outliers = false, quiet = false, lenient = false;
 };
@@ -77,6 +77,9 @@ FitJobOptions job_options(const FitArgs& a, FitJobOptions o) {
   if (!a.base.empty())
     o.base = parse_choice("--base", a.base, {"rqb", "quartic"}) == 1 ? ArcKind::quartic
                                                                    : ArcKind::rqb;
+  if (!a.revolution.empty())
+    o.revolution = static_cast<RevolutionMode>(
+        parse_choice("--revolution", a.revolution, {"auto", "yes", "no"}));
   o.threads = parse_int_pair("--threads", a.threads, 1, 256).first;
   o.skip_bad = o.skip_bad || a.skip_bad;
   o.reject_outliers = o.reject_outliers || a.reject_outliers;
@@ -155,15 +158,20 @@ void add_fit_command(CLI::App& app) {
       "pole)");
   cmd->add_option("--degree", args->degree,
                   "p[,q]: degrees of F along u (φ or z) and v (θ); a curve uses the last");
-  cmd->add_option("--ctrl", args->ctrl, "n[,m]: control values of F along u and v (default 12)");
+  cmd->add_option("--ctrl", args->ctrl,
+                  "n[,m]: control values of F along u and v (default: chosen by GCV over net "
+                  "sizes, at most one coefficient per 4 points)");
   cmd->add_option("--tol", args->tol,
-                  "mm: refine F until the distance measure meets this (instead of --ctrl)");
+                  "mm: refine F until the distance measure meets this (instead of --ctrl); a "
+                  "tolerance below the data's noise estimate is refused");
   cmd->add_option("--tol-measure", args->tol_measure,
                   "max|p99|p95|rms: the statistic --tol bounds (default max)");
   cmd->add_option("--center", args->center,
-                  "X,Y[,Z]: origin of the fit's frame in mm (profiles: the polar centre)");
+                  "X,Y[,Z]: origin of the fit's frame in mm (profiles: the polar centre); alone, "
+                  "a cylindrical fit refines the axis through it");
   cmd->add_option("--axis", args->axis,
-                  "X,Y,Z: axis k of the fit's frame (profiles: the plane normal)");
+                  "X,Y,Z: axis k of the fit's frame (profiles: the plane normal); alone, a "
+                  "cylindrical fit finds its line by least squares");
   cmd->add_option("--fairness", args->fairness,
                   "fixed|relative|gcv: how the fairing weight λ is chosen (default relative: "
                   "--lambda times the data's scale; fixed: λ = --lambda; gcv: generalised "
@@ -173,6 +181,10 @@ void add_fit_command(CLI::App& app) {
   cmd->add_option("--base", args->base,
                   "rqb|quartic: arcs of the base circles (default rqb; quartic: quasi-uniform "
                   "quartic arcs, Blanc–Schlick)");
+  cmd->add_option("--revolution", args->revolution,
+                  "auto|yes|no: make F constant around the axis — an exact surface of revolution, "
+                  "sphere-like form or circle (default auto: when an F-test of F(u) against "
+                  "F(u, v) finds no variation beyond the noise at the 0.1 % level)");
   cmd->add_option("--threads", args->threads, "worker threads (default 2)");
   cmd->add_flag("--skip-bad", args->skip_bad,
                 "skip unparsable or non-finite records instead of stopping");

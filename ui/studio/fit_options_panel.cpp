@@ -56,8 +56,14 @@ bool draw_fit_options(FitSettings& s) {
         "makes the "
         "max unreachable; the 99th percentile ignores the worst 1 % of the points.");
   } else {
-    changed |= input_int("control values u", s.size_u, 2, 200);
-    changed |= input_int("control values v", s.size_v, 2, 200);
+    changed |= ImGui::Checkbox("net chosen by the data", &s.automatic_net);
+    help_marker(
+        "Nets grown until generalised cross-validation stops improving (the residual reaches the "
+        "noise), at most one coefficient per 4 points (as polarform fit without --ctrl).");
+    if (!s.automatic_net) {
+      changed |= input_int("control values u", s.size_u, 2, 200);
+      changed |= input_int("control values v", s.size_v, 2, 200);
+    }
   }
   static constexpr std::array<std::string_view, 3> kFairness = {"fixed λ", "relative λ", "GCV"};
   changed |= combo("fairness", s.fairness, kFairness);
@@ -68,6 +74,12 @@ bool draw_fit_options(FitSettings& s) {
   static constexpr std::array<std::string_view, 5> kPoles = {"automatic", "none", "G0 point",
                                                              "G1 point", "cap surface"};
   changed |= combo("poles (spherical)", s.pole, kPoles);
+  static constexpr std::array<std::string_view, 3> kRevolution = {"F-test", "always", "never"};
+  changed |= combo("exact revolution", s.revolution, kRevolution);
+  help_marker(
+      "Whether F is made constant around the axis (an exact surface of revolution, sphere-like "
+      "form or circle): decided by an F-test of F(u) against F(u, v) at the 0.1 % level, or "
+      "always, or never (as --revolution auto|yes|no of polarform fit).");
   changed |= ImGui::Checkbox("reject outliers", &s.reject_outliers);
   help_marker(
       "Points more than 8 robust σ off the fit are left out of it and the fit repeated until they "

@@ -11,6 +11,7 @@ FitSettings fit_settings(const FitProject& p) {
   if (p.pole) s.pole = static_cast<int>(*p.pole);
   if (p.degree) s.degree_u = p.degree->first, s.degree_v = p.degree->second;
   if (p.ctrl) s.size_u = p.ctrl->first, s.size_v = p.ctrl->second;
+  s.automatic_net = !p.ctrl;
   s.use_tolerance = p.tolerance.has_value();
   if (p.tolerance) s.tolerance = *p.tolerance;
   s.measure = static_cast<int>(p.measure);
@@ -21,6 +22,7 @@ FitSettings fit_settings(const FitProject& p) {
   s.fairness = static_cast<int>(p.fairness);
   s.fairness_weight = p.fairness_weight;
   s.quartic_base = p.base == ArcKind::quartic;
+  s.revolution = static_cast<int>(p.revolution);
   return s;
 }
 
@@ -34,7 +36,7 @@ FitProject fit_project(const FitSettings& s, const std::filesystem::path& scan) 
   p.degree = std::make_pair(s.degree_u, s.degree_v);
   if (s.use_tolerance)
     p.tolerance = s.tolerance;
-  else
+  else if (!s.automatic_net)
     p.ctrl = std::make_pair(s.size_u, s.size_v);
   p.measure = static_cast<ToleranceMeasure>(s.measure);
   p.center = s.center;
@@ -44,6 +46,7 @@ FitProject fit_project(const FitSettings& s, const std::filesystem::path& scan) 
   p.fairness = static_cast<FairnessOptions::Mode>(s.fairness);
   p.fairness_weight = s.fairness_weight;
   p.base = s.quartic_base ? ArcKind::quartic : ArcKind::rqb;
+  p.revolution = static_cast<RevolutionMode>(s.revolution);
   return p;
 }
 

@@ -16,11 +16,13 @@ namespace polarform::studio {
 struct FitSettings {
   int method = 0;  // FitJobMethod: 0 automatic, 1 polar, 2 spherical, 3 cylindrical
   int degree_u = 3, degree_v = 3;
-  // Off by default, as in `polarform fit`: a fixed 12 x 12 net always fits, whereas any default
-  // tolerance is below the noise of some scan.
+  // Off by default, as in `polarform fit`: a net chosen by the data always fits, whereas any
+  // default tolerance is below the noise of some scan.
   bool use_tolerance = false;
   double tolerance = 0.1;  // mm, on the true distance statistic `measure`
   int measure = 1;         // ToleranceMeasure: scans are noisy, so p99 rather than the max
+  bool automatic_net =
+      true;  // no tolerance: the net chosen by the data (GCV), else size_u x size_v
   int size_u = 12, size_v = 12;
   int fairness = 1;  // FairnessOptions::Mode
   double fairness_weight = 1e-7;
@@ -31,6 +33,7 @@ struct FitSettings {
   std::optional<Eigen::Vector3d> center, axis;
   bool skip_bad = true;  // the studio always skips bad records (and says how many); kept for files
   bool reject_outliers = false;  // leave outliers out of the fit instead of refusing the cloud
+  int revolution = 0;            // RevolutionMode: 0 F-test, 1 always F(u) alone, 2 never
 
   bool operator==(const FitSettings&) const = default;
 };

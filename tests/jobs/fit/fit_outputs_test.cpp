@@ -52,7 +52,21 @@ TEST(FitOutputs, SphereLikeExampleWritesEveryFileAndASaneReport) {
   EXPECT_NEAR(o[2].get<double>(), 20.0, 0.2);
   EXPECT_EQ(j["degrees"]["F"], nlohmann::json::array({3, 3}));
   EXPECT_EQ(j["degrees"]["nurbs"], nlohmann::json::array({5, 5}));
-  EXPECT_EQ(j["control_net"]["F"], nlohmann::json::array({12, 12}));
+  // The net is the data's choice (GCV over net sizes), within one coefficient per 4 points.
+  const auto& net = j["control_net_choice"];
+  EXPECT_EQ(net["chosen_by"], "gcv over net sizes");
+  EXPECT_EQ(net["max_coefficients"], 750);
+  EXPECT_EQ(j["control_net"]["F"], net["net"]);
+  EXPECT_LE(j["control_net"]["F"][0].get<int>() * j["control_net"]["F"][1].get<int>(), 750);
+  EXPECT_GE(net["candidates"].size(), 3u);
+  EXPECT_FALSE(j["revolution"]["rotational"].get<bool>());
+  EXPECT_LT(j["revolution"]["f_test"]["p_value"].get<double>(), 1e-3);
+  // The quadric frame and the least-squares centre were both fitted; the smaller rms was kept.
+  ASSERT_GE(j["frame_candidates"].size(), 2u);
+  double best = 1e300;
+  for (const auto& c : j["frame_candidates"])
+    if (!c["rms_mm"].is_null()) best = std::min(best, c["rms_mm"].get<double>());
+  EXPECT_DOUBLE_EQ(best, j["error_mm"]["rms"].get<double>());
   const auto& e = j["error_mm"];
   EXPECT_EQ(e["count"], 3000);
   // Noise 0.02 mm per coordinate: the error is of that order and its statistics are ordered.

@@ -24,7 +24,9 @@ TEST(FitSettings, ProjectFieldsRoundTrip) {
   FitSettings s;
   s.method = 2;
   s.degree_u = 2, s.degree_v = 4;
+  s.automatic_net = false;
   s.size_u = 9, s.size_v = 30;
+  s.revolution = static_cast<int>(RevolutionMode::no);
   s.closure = static_cast<int>(Closure::closed);
   s.pole = static_cast<int>(PoleTreatment::cap);
   s.fairness = static_cast<int>(FairnessOptions::Mode::gcv);
@@ -36,6 +38,7 @@ TEST(FitSettings, ProjectFieldsRoundTrip) {
   s.tolerance = 0.037;
   s.measure = static_cast<int>(ToleranceMeasure::p95);
   s.size_u = s.size_v = 12;  // not stored with a tolerance: back to the defaults
+  s.automatic_net = true;
   EXPECT_EQ(round_trip(s), s);
   EXPECT_EQ(round_trip(FitSettings{}), FitSettings{});
 }
@@ -64,9 +67,15 @@ TEST(FitSettings, EveryMethodRoundTrips) {
 TEST(FitSettings, BecomeTheFitJobsOptions) {
   FitSettings s;
   s.method = static_cast<int>(FitJobMethod::spherical);
-  s.size_u = 10, s.size_v = 20;
   s.pole = static_cast<int>(PoleTreatment::g1);
   FitJobOptions o = fit_job_options(fit_project(s, "a.xyz"));
+  EXPECT_FALSE(o.ctrl);  // by default the net is chosen by the data
+  EXPECT_EQ(o.revolution, RevolutionMode::automatic);
+  s.automatic_net = false;
+  s.size_u = 10, s.size_v = 20;
+  s.revolution = static_cast<int>(RevolutionMode::yes);
+  o = fit_job_options(fit_project(s, "a.xyz"));
+  EXPECT_EQ(o.revolution, RevolutionMode::yes);
   EXPECT_EQ(o.method, FitJobMethod::spherical);
   EXPECT_EQ(o.ctrl, std::make_pair(10, 20));
   EXPECT_FALSE(o.tolerance);  // a fixed net

@@ -1,0 +1,37 @@
+// Candidate local frames for the surface fits besides the quadric frame (Bae 2002, §4.3): a
+// least-squares axis line for cylinder-like data (Gauss–Newton on the distance-to-axis residual of
+// a surface of revolution r(t) = c0 + c1 t + c2 t², t along the axis) and a least-squares centre
+// for sphere-like data (Gauss–Newton on |p − c| − R). Each candidate is a name, an origin, an axis
+// and how it was found; the fitter scores it by the error its fit achieves (rotational_fit.h).
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+
+namespace polarform {
+
+struct FrameCandidate {
+  std::string
+      name;  // "quadric", "least-squares axis", "least-squares centre" (a PCA frame: one more)
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();
+  std::string how;      // how it was found, with its residual
+  double rms = -1.0;    // the fit's rms true distance with this frame (< 0: not fitted)
+  std::string failure;  // why its fit failed (not single-valued, …), empty when it did not
+};
+
+// The line (origin on it, unit axis) minimising Σ (dist(p, line) − r(t))², r quadratic in t, by
+// Gauss–Newton from the start line; a given origin or axis stays fixed (the other is refined).
+// At most 20,000 evenly strided points are used.
+FrameCandidate least_squares_axis(const Eigen::Matrix3Xd& points,
+                                  const Eigen::Vector3d& start_origin,
+                                  const Eigen::Vector3d& start_axis, bool fix_origin,
+                                  bool fix_axis);
+
+// The centre minimising Σ (|p − c| − R)² by Gauss–Newton from the start centre (the axis is kept).
+FrameCandidate least_squares_centre(const Eigen::Matrix3Xd& points,
+                                    const Eigen::Vector3d& start_centre,
+                                    const Eigen::Vector3d& axis);
+
+}  // namespace polarform
