@@ -55,19 +55,23 @@ std::vector<int> detect_corners(const Eigen::Matrix<double, Dim, Eigen::Dynamic>
                                 double corner_angle, int k) {
   const Eigen::VectorXd a = turning_angles<Dim>(P, closed, k);
   const Eigen::Index n = P.cols();
+  // Non-maximum suppression: the largest angles first (ties: the smaller index), each suppressing
+  // the candidates closer than k points to it.
+  std::vector<int> cand;
+  for (Eigen::Index i = 0; i < n; ++i)
+    if (a[i] > corner_angle) cand.push_back(static_cast<int>(i));
+  std::stable_sort(cand.begin(), cand.end(), [&](int x, int y) { return a[x] > a[y]; });
   std::vector<int> out;
-  for (Eigen::Index i = 0; i < n; ++i) {
-    if (!(a[i] > corner_angle)) continue;
-    bool peak = true;  // a local maximum within ±k (ties: the first one)
-    for (int j = -k; j <= k && peak; ++j) {
-      if (j == 0) continue;
-      const Eigen::Index m = i + j;
-      if (!closed && (m < 0 || m >= n)) continue;
-      const double other = a[(m + n) % n];
-      peak = j < 0 ? a[i] > other : a[i] >= other;
+  for (int c : cand) {
+    bool free = true;
+    for (int o : out) {
+      Eigen::Index gap = std::abs(c - o);
+      if (closed) gap = std::min(gap, n - gap);
+      free = free && gap >= k;
     }
-    if (peak) out.push_back(static_cast<int>(i));
+    if (free) out.push_back(c);
   }
+  std::sort(out.begin(), out.end());
   return out;
 }
 

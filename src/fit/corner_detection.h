@@ -1,6 +1,7 @@
 // Corners of an ordered point sequence (spec B1, "corner detection", for Kantz 2003 profiles): the
 // turning angle at point i between the total-least-squares directions of the k points before and
-// the k points after it; a corner is a local maximum of the angle above a threshold.
+// the k points after it; a corner is an angle above a threshold that is the largest within k
+// points.
 #pragma once
 
 #include <Eigen/Core>

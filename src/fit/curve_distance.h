@@ -24,6 +24,9 @@ class CurveDistance {
   // across the domain ends (a periodic curve).
   explicit CurveDistance(const NurbsCurve<Dim>& curve, bool closed = false,
                          int samples_per_span = 24);
+  // The grid index refers to the samples: neither copied nor moved.
+  CurveDistance(const CurveDistance&) = delete;
+  CurveDistance& operator=(const CurveDistance&) = delete;
 
   struct Foot {
     double u = 0.0;

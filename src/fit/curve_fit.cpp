@@ -107,13 +107,28 @@ Matrix<Dim> solve_control_points(const Layout& L, const Knots& U, const Matrix<D
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(M);
   const double dmax = M.diagonal().maxCoeff();
   if (ldlt.info() != Eigen::Success || ldlt.vectorD().minCoeff() <= 1e-13 * dmax) {
-    // Spans without data (Schoenberg–Whitney fails): a tiny ridge towards the data centroid.
-    const Eigen::RowVectorXd c = Q.rowwise().mean().transpose();
-    Eigen::SparseMatrix<double> I(m, m);
-    I.setIdentity();
+    // Spans without data (Schoenberg–Whitney fails): a tiny fairness term λ Σ|P_{j−1} − 2P_j +
+    // P_{j+1}|² makes the free control points of a run without data lie evenly on the line between
+    // its fixed ones (a straight run stays straight).
     const double lambda = 1e-10 * dmax;
-    M += lambda * I;
-    B += lambda * Eigen::MatrixXd::Ones(m, 1) * c;
+    std::vector<Eigen::Triplet<double>> d2;
+    for (int j = 1; j + 1 < n; ++j) {
+      const int col[3] = {L.unknown(j - 1), L.unknown(j), L.unknown(j + 1)};
+      if (col[1] < 0) continue;  // not across a fixed (corner) control point
+      const double c[3] = {1.0, -2.0, 1.0};
+      Eigen::Matrix<double, Dim, 1> known = Eigen::Matrix<double, Dim, 1>::Zero();
+      for (int a = 0; a < 3; ++a)
+        if (col[a] < 0) known += c[a] * fixed.col(-1 - col[a]);
+      for (int a = 0; a < 3; ++a) {
+        if (col[a] < 0) continue;
+        for (int b = 0; b < 3; ++b)
+          if (col[b] >= 0) d2.emplace_back(col[a], col[b], lambda * c[a] * c[b]);
+        B.row(col[a]) -= lambda * c[a] * known.transpose();
+      }
+    }
+    Eigen::SparseMatrix<double> F(m, m);
+    F.setFromTriplets(d2.begin(), d2.end());
+    M += F;
     ldlt.compute(M);
     if (ldlt.info() != Eigen::Success)
       throw NumericalError("curve fit: the normal equations are singular");
@@ -431,6 +446,7 @@ CurveFit<Dim> fit_curve(const Matrix<Dim>& input, const CurveFitOptions<Dim>& o)
   out.rms = std::sqrt(best.distances.squaredNorm() / static_cast<double>(N));
   out.tolerance_met = !want_tol || best.max <= o.tolerance;
   out.corner_parameters = L.corners;
+  if (joined) out.corner_parameters.insert(out.corner_parameters.begin(), 0.0);  // the C0 seam
   return out;
 }
 

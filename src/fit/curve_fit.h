@@ -50,7 +50,7 @@ struct CurveFit {
   double max_distance = 0.0;
   double rms = 0.0;
   bool tolerance_met = false;  // max_distance <= tolerance (true when no tolerance was asked)
-  std::vector<double> corner_parameters;  // where the C0 knots are
+  std::vector<double> corner_parameters;  // where the C0 knots are (0: a closed curve's C0 seam)
 };
 
 // Chord-length parameters of ordered points (MIT eqs. (8.1)–(8.3)) normalised to [0, 1]; closed

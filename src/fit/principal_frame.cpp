@@ -2,6 +2,7 @@
 #include "src/fit/principal_frame.h"
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 #include <cmath>
 #include <string>
 
