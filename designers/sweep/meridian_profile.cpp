@@ -108,6 +108,15 @@ MeridianProfile ring_profile(const Eigen::Matrix2Xd& zr, const std::vector<int>&
   for (int i = 0; i < m; ++i)
     if (axis_pt(i) && !cut[i] && !cut[(i - 1 + m) % m])
       cut[len(i) >= len(i + m - 1) ? i : (i - 1 + m) % m] = 1;
+  // An open profile off the axis: the tour returns along one edge far longer than any other.
+  if (std::find(cut.begin(), cut.end(), 1) == cut.end() && m >= 3) {
+    std::vector<double> l(static_cast<std::size_t>(m));
+    for (int i = 0; i < m; ++i) l[i] = len(i);
+    const int longest = static_cast<int>(std::max_element(l.begin(), l.end()) - l.begin());
+    std::vector<double> rest = l;
+    rest.erase(rest.begin() + longest);
+    if (l[longest] > 3 * *std::max_element(rest.begin(), rest.end())) cut[longest] = 1;
+  }
   const auto first_cut = std::find(cut.begin(), cut.end(), 1);
   if (first_cut == cut.end()) {
     Eigen::Matrix2Xd pts(2, m);

@@ -1,7 +1,8 @@
 // The profile curves of a band of 2D points (Kantz 2003, §4.5 "slicing algorithm", spec K7): either
 // ring clusters (a mesh whose vertices lie on exact circles collapses into a few exact points; they
-// are merged, ordered by the shortest tour and cut where it runs along the axis) or a scan band
-// (MLS thinning, ordered subset selection); then corners and the parametric least-squares fit to a
+// are merged, ordered by the shortest tour and cut where it runs along the axis or returns along
+// one edge over 3× longer than any other) or a scan band (MLS thinning, ordered subset
+// selection); then corners and the parametric least-squares fit to a
 // tolerance (spec B1). Profile ends on the axis (r = 0) are interpolated exactly there (poles).
 #pragma once
 

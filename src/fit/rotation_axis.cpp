@@ -96,6 +96,22 @@ bool small_step(const AxisLine& a, const AxisLine& b, const AxisRefinementOption
   return turn + shift <= o.step_tolerance * o.size;
 }
 
+// One Gauss–Newton iteration's bookkeeping: rms and covariance recorded, the step applied;
+// true when the axis moved less than the step tolerance.
+bool take_step(AxisRefinement& out, const Normal4& N, int it, const Eigen::Vector3d& centroid,
+               const AxisRefinementOptions& o) {
+  const double rms = N.w > 0 ? std::sqrt(N.wrr / N.w) : 0.0;
+  if (it == 0) out.rms_before = rms;
+  out.rms_after = rms;
+  out.covariance = covariance(N);
+  const AxisLine next = apply_step(out.axis, solve_step(N), centroid);
+  const bool done = small_step(out.axis, next, o);
+  out.axis = next;
+  out.iterations = it + 1;
+  out.converged = done;
+  return done;
+}
+
 }  // namespace
 
 Eigen::Matrix2Xd meridian_coordinates(const Eigen::Matrix3Xd& points, const AxisLine& axis,
@@ -140,20 +156,8 @@ AxisRefinement refine_axis_by_profile(const Eigen::Matrix3Xd& points, const Axis
       N.wrr += w[k] * d[k] * d[k];
       N.w += w[k];
     }
-    const double rms = N.w > 0 ? std::sqrt(N.wrr / N.w) : 0.0;
-    if (it == 0) out.rms_before = rms;
-    out.rms_after = rms;
-    out.covariance = covariance(N);
-    out.iterations = it;
     if (N.w < 8.0) break;
-    const AxisLine next = apply_step(out.axis, solve_step(N), centroid);
-    const bool done = small_step(out.axis, next, o);
-    out.axis = next;
-    out.iterations = it + 1;
-    if (done) {
-      out.converged = true;
-      break;
-    }
+    if (take_step(out, N, it, centroid, o)) break;
   }
   return out;
 }
@@ -174,8 +178,16 @@ int cluster_points(const Eigen::Matrix2Xd& P, double merge, int min_size, std::v
       queue.pop_back();
       members.push_back(q);
       grid.radius(P.col(q), merge, nb);
-      for (int i : nb)
-        if (label[i] == -2) label[i] = count, queue.push_back(i);
+      for (int i : nb) {
+        if (label[i] != -2) continue;
+        label[i] = count;
+        // A point (nearly) coincident with q adds no reach: it is not expanded (rings of exactly
+        // equal (z, r) stay O(n)).
+        if ((P.col(i) - P.col(q)).norm() > 1e-3 * merge)
+          queue.push_back(i);
+        else
+          members.push_back(i);
+      }
     }
     if (static_cast<int>(members.size()) >= min_size) {
       ++count;
@@ -227,15 +239,7 @@ AxisRefinement refine_axis_by_rings(const Eigen::Matrix3Xd& points, const AxisLi
       N.wrr += w[k] * r.squaredNorm();
       N.w += w[k];
     }
-    const double rms = N.w > 0 ? std::sqrt(N.wrr / N.w) : 0.0;
-    if (it == 0) out.rms_before = rms;
-    out.rms_after = rms;
-    out.covariance = covariance(N);
-    out.iterations = it;
-    const AxisLine next = apply_step(out.axis, solve_step(N), centroid);
-    const bool done = small_step(out.axis, next, o);
-    out.axis = next;
-    out.iterations = it + 1;
+    const bool done = take_step(out, N, it, centroid, o);
     // The merge radius follows the typical (median) spread, so rings merged at a coarse radius
     // separate again as the axis improves.
     Eigen::VectorXd clustered(points.cols());
@@ -243,10 +247,7 @@ AxisRefinement refine_axis_by_rings(const Eigen::Matrix3Xd& points, const AxisLi
     for (Eigen::Index k = 0; k < points.cols(); ++k)
       if (label[k] >= 0) clustered[nc++] = spread[k];
     eps = std::clamp(10.0 * abs_quantile(clustered.head(nc), 0.5), 1e-9 * o.size, merge);
-    if (done) {
-      out.converged = true;
-      break;
-    }
+    if (done) break;
   }
   return out;
 }

@@ -61,8 +61,9 @@ AxisRefinement refine_axis_by_profile(const Eigen::Matrix3Xd& points, const Axis
 AxisRefinement refine_axis_by_rings(const Eigen::Matrix3Xd& points, const AxisLine& start,
                                     double merge, const AxisRefinementOptions& options);
 
-// Cluster labels of 2D points by single linkage within `merge` (grid index), -1 for clusters with
-// fewer than min_size points; returns the number of clusters kept.
+// Cluster labels of 2D points by single linkage within `merge` (grid index; points within
+// 1e-3·merge of an expanded one are not expanded themselves), -1 for clusters with fewer than
+// min_size points; returns the number of clusters kept.
 int cluster_points(const Eigen::Matrix2Xd& points, double merge, int min_size,
                    std::vector<int>& label);
 
