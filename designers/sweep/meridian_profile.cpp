@@ -22,12 +22,17 @@ namespace polarform {
 
 namespace {
 
-// The shortest closed tour through the points: nearest neighbour, then 2-opt (Croes 1958).
+// The shortest closed tour through the points: nearest neighbour from the lowest (z, r), which
+// is an end of most profiles (so an open profile's tour returns along one long edge), then 2-opt
+// (Croes 1958).
 std::vector<int> shortest_tour(const Eigen::Matrix2Xd& P) {
   const int m = static_cast<int>(P.cols());
-  std::vector<int> tour{0};
+  int first = 0;
+  for (int j = 1; j < m; ++j)
+    if (P(0, j) < P(0, first) || (P(0, j) == P(0, first) && P(1, j) < P(1, first))) first = j;
+  std::vector<int> tour{first};
   std::vector<char> used(static_cast<std::size_t>(m), 0);
-  used[0] = 1;
+  used[first] = 1;
   for (int s = 1; s < m; ++s) {
     int best = -1;
     double bd = 0.0;

@@ -6,8 +6,8 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
-#include <string>
 #include <vector>
 
 #include "designers/sweep/revolution_recovery.h"
@@ -50,7 +50,9 @@ void BM_RevolutionRecovery(benchmark::State& state) {
     max = r.error.max;
     benchmark::DoNotOptimize(max);
   }
-  state.SetLabel("max distance " + std::to_string(max) + " mm");
+  char label[64];
+  std::snprintf(label, sizeof label, "max distance %.3g mm", max);
+  state.SetLabel(label);
 }
 BENCHMARK(BM_RevolutionRecovery)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
 
