@@ -9,6 +9,7 @@ void register_commands(CLI::App& app) {
   add_fit_command(app);
   add_viz_command(app);
   add_scan_cam_command(app);
+  add_sweep_command(app);
 }
 
 }  // namespace polarform::cli

@@ -49,5 +49,6 @@ void add_vessel_command(CLI::App& app);
 void add_fit_command(CLI::App& app);
 void add_viz_command(CLI::App& app);
 void add_scan_cam_command(CLI::App& app);
+void add_sweep_command(CLI::App& app);
 
 }  // namespace polarform::cli

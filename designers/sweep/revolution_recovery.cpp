@@ -1,0 +1,132 @@
+// Surface-of-revolution recovery (Kantz 2003, §5.3; spec K11): frame, axis, profile, surface,
+// errors.
+#include "designers/sweep/revolution_recovery.h"
+
+#include <chrono>
+#include <string>
+
+#include "src/error.h"
+#include "src/nurbs/surface_of_revolution.h"
+
+namespace polarform {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+Eigen::Matrix3Xd strided(const Eigen::Matrix3Xd& P, int max_points) {
+  const Eigen::Index stride = std::max<Eigen::Index>(1, (P.cols() + max_points - 1) / max_points);
+  Eigen::Matrix3Xd sub(3, (P.cols() + stride - 1) / stride);
+  for (Eigen::Index k = 0; k < sub.cols(); ++k) sub.col(k) = P.col(k * stride);
+  return sub;
+}
+
+}  // namespace
+
+// NURBS Book A8.1 on the profile placed in a meridian plane: (z, r) ↦ c + z a + r e.
+NurbsSurface revolve_meridian(const NurbsCurve2d& profile, const AxisLine& axis) {
+  const Eigen::Vector3d a = axis.direction.normalized();
+  const Eigen::Vector3d t =
+      std::abs(a.x()) < 0.6 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+  const Eigen::Vector3d e = (t - t.dot(a) * a).normalized();
+  NurbsCurve3d::Points pts;
+  for (const Eigen::Vector2d& q : profile.control_points())
+    pts.push_back(axis.point + q.x() * a + q.y() * e);
+  return revolve(NurbsCurve3d(profile.degree(), profile.knots(), pts, profile.weights()),
+                 axis.point, a);
+}
+
+RevolutionRecovery recover_revolution(const Eigen::Matrix3Xd& points, const RevolutionOptions& o) {
+  if (points.cols() < 8)
+    throw InputError("revolution recovery: " + std::to_string(points.cols()) +
+                     " points, need at least 8");
+  if (!points.allFinite())
+    throw InputError("revolution recovery: a point has a non-finite coordinate");
+  if (o.axis_direction && !(o.axis_direction->norm() > 0.0))
+    throw InputError("revolution recovery: the axis direction is zero");
+  RevolutionRecovery out;
+  auto t0 = std::chrono::steady_clock::now();
+  out.size = (points.rowwise().maxCoeff() - points.rowwise().minCoeff()).norm();
+  out.tolerance = o.tolerance > 0 ? o.tolerance : 1e-4 * out.size;
+  out.pca = principal_frame(points);
+  out.tie_ratio = out.pca.tie_ratio(FrameAxis::most_distinct);
+  out.start_axis.direction = o.axis_direction ? Eigen::Vector3d(o.axis_direction->normalized())
+                                              : out.pca.axis(FrameAxis::most_distinct);
+  out.start_axis.point = o.axis_point ? *o.axis_point : out.pca.centroid;
+  out.axis = out.start_axis;
+  out.timings_s.frame = seconds_since(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  MeridianOptions mo;
+  mo.tolerance = out.tolerance;
+  mo.degree = o.degree;
+  mo.corner_angle = o.corner_angle;
+  mo.threads = o.threads;
+  if (o.refine_axis) {
+    const Eigen::Matrix3Xd sub = strided(points, o.max_axis_points);
+    AxisRefinementOptions ro;
+    ro.size = out.size;
+    ro.threads = o.threads;
+    // Ring-structured meshes: exact clusters decide (accepted when they collapse), from a merge
+    // radius that grows until the rings of a start axis that is off collapse into clusters.
+    auto rings = [&](const AxisLine& from) {
+      AxisRefinement r;
+      for (double merge : {1e-3, 4e-3, 1.6e-2}) {
+        r = refine_axis_by_rings(sub, from, merge * out.size, ro);
+        if (r.converged && r.clustered >= 0.8 && r.rms_after <= 1e-9 * out.size)
+          return std::pair<AxisRefinement, bool>{r, true};
+      }
+      return std::pair<AxisRefinement, bool>{r, false};
+    };
+    auto [ring, ok] = rings(out.start_axis);
+    if (!ok) {
+      ro.scale_floor = out.tolerance / 3;
+      ro.max_iterations = 10;
+      ro.step_tolerance = 1e-9;
+      const MeridianModel model = [&](const Eigen::Matrix2Xd& zr) {
+        const MeridianProfile p = recover_meridian_profile(zr, mo);
+        const MeridianDistances d = meridian_distances(p, zr, o.threads);
+        return MeridianResiduals{d.distance, d.normal,
+                                 std::vector<char>(static_cast<std::size_t>(zr.cols()), 1)};
+      };
+      out.refinement = refine_axis_by_profile(strided(sub, o.max_profile_axis_points),
+                                              out.start_axis, model, ro);
+      ro.scale_floor = 0.0;
+      ro.max_iterations = 30;
+      ro.step_tolerance = 1e-10;
+      std::tie(ring, ok) = rings(out.refinement.axis);
+      if (ok) {
+        ring.rms_before = out.refinement.rms_before;
+        out.refinement = ring;
+      }
+    } else {
+      out.refinement = ring;
+    }
+    out.ring_axis = ok;
+    out.axis = out.refinement.axis;
+  }
+  out.timings_s.axis = seconds_since(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  out.meridian = meridian_coordinates(points, out.axis, o.threads);
+  out.profile = recover_meridian_profile(out.meridian, mo);
+  out.timings_s.profile = seconds_since(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  for (const MeridianLoop& l : out.profile.loops)
+    out.surfaces.push_back(revolve_meridian(l.curve, out.axis));
+  out.timings_s.surface = seconds_since(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  // For a surface of revolution the 3D distance equals the (z, r) distance to the profile.
+  out.distances = meridian_distances(out.profile, out.meridian, o.threads).distance;
+  out.error = error_stats(out.distances);
+  for (Eigen::Index k = 0; k < out.distances.size(); ++k)
+    out.unexplained += std::abs(out.distances[k]) > out.tolerance;
+  out.timings_s.error = seconds_since(t0);
+  return out;
+}
+
+}  // namespace polarform

@@ -1,0 +1,59 @@
+// Surface-of-revolution recovery from a point cloud or mesh vertices (Kantz 2003, §5.3, spec K11):
+// the axis from the PCA frame's most distinct eigenvector (or the user's), refined on ring clusters
+// or against the recovered profile by robust Gauss–Newton; every point projected to the meridian
+// half-plane; the profile recovered and fitted to a tolerance; the exact surface of revolution
+// (profile × rational quadratic circle, degree (2, p)); the true distances of all points.
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <vector>
+
+#include "designers/sweep/meridian_profile.h"
+#include "src/fit/error_stats.h"
+#include "src/fit/principal_frame.h"
+#include "src/fit/rotation_axis.h"
+#include "src/nurbs/nurbs_surface.h"
+
+namespace polarform {
+
+struct RevolutionOptions {
+  std::optional<Eigen::Vector3d> axis_direction;  // given: no PCA start
+  std::optional<Eigen::Vector3d> axis_point;      // given with the direction: a point on the axis
+  bool refine_axis = true;
+  double tolerance = 0.0;  // the max distance asked for; <= 0: 1e-4 of the size
+  int degree = 3;
+  double corner_angle = 0.5235987755982988;  // 30°
+  int max_axis_points = 40000;  // the axis is refined on an evenly strided subset of this size
+  int max_profile_axis_points = 12000;  // ... and of this size against a scan's profile
+  int threads = 2;
+};
+
+struct RevolutionRecovery {
+  PrincipalFrame pca;
+  double tie_ratio = 0.0;  // of the two eigenvalues other than the axis's
+  AxisLine start_axis, axis;
+  AxisRefinement refinement;  // rms before/after, iterations, covariance
+  bool ring_axis = false;     // refined on ring clusters
+  MeridianProfile profile;
+  std::vector<NurbsSurface> surfaces;  // one per profile loop, degree (2, p)
+  Eigen::Matrix2Xd meridian;           // (z, r) of every point
+  Eigen::VectorXd distances;           // signed true distances of every point to the surface
+  ErrorStats error;
+  double size = 0.0;  // bounding-box diagonal of the points
+  double tolerance = 0.0;
+  std::size_t unexplained = 0;  // points farther than the tolerance
+  struct Timings {
+    double frame = 0, axis = 0, profile = 0, surface = 0, error = 0;
+  } timings_s;
+};
+
+// Needs at least 8 finite points (InputError otherwise); NumericalError when no profile can be
+// recovered.
+RevolutionRecovery recover_revolution(const Eigen::Matrix3Xd& points,
+                                      const RevolutionOptions& options = {});
+
+// The exact surface of revolution of a (z, r) profile about the axis (NURBS Book A8.1).
+NurbsSurface revolve_meridian(const NurbsCurve2d& profile, const AxisLine& axis);
+
+}  // namespace polarform

@@ -1,0 +1,100 @@
+// `polarform sweep`: recover a swept surface from a scan or mesh of a turned part (Kantz 2003):
+// the axis, the meridian profile and the exact surface of revolution, with the true distances of
+// every point. Exit 1 when --tol is not met (the bundle is written, the report says by how much).
+#include <cstdio>
+#include <filesystem>
+
+#include "jobs/sweep/sweep_outputs.h"
+#include "src/error.h"
+#include "src/number_text.h"
+#include "ui/cli/commands.h"
+#include "ui/cli/fit_arguments.h"
+
+namespace polarform::cli {
+
+namespace {
+
+struct SweepArgs {
+  std::string scan, out, kind = "auto", axis, center, tol, degree, corner_angle, threads = "2";
+  bool skip_bad = false, quiet = false;
+};
+
+Eigen::Vector3d vector3(const std::string& option, const std::string& text) {
+  const std::vector<double> v = parse_numbers(option, text, 3, 3);
+  return Eigen::Vector3d(v[0], v[1], v[2]);
+}
+
+void run(const SweepArgs& a) {
+  SweepJobOptions o;
+  constexpr SweepKind kinds[] = {SweepKind::automatic, SweepKind::revolution, SweepKind::extrusion};
+  o.kind = kinds[parse_choice("--kind", a.kind, {"auto", "revolution", "extrusion"})];
+  if (!a.axis.empty()) o.axis = vector3("--axis", a.axis);
+  if (!a.center.empty()) o.center = vector3("--center", a.center);
+  if (!a.tol.empty()) {
+    o.tolerance = parse_numbers("--tol", a.tol, 1, 1)[0];
+    if (!(o.tolerance > 0))
+      throw InputError("--tol '" + a.tol + "': expected a positive number of mm");
+  }
+  if (!a.degree.empty()) o.degree = parse_int_pair("--degree", a.degree, 1, 9).first;
+  if (!a.corner_angle.empty()) {
+    o.corner_angle_deg = parse_numbers("--corner-angle", a.corner_angle, 1, 1)[0];
+    if (!(o.corner_angle_deg > 0 && o.corner_angle_deg < 180))
+      throw InputError("--corner-angle '" + a.corner_angle + "': expected degrees in (0, 180)");
+  }
+  o.threads = parse_int_pair("--threads", a.threads, 1, 256).first;
+  o.skip_bad = a.skip_bad;
+  const SweepJobResult r = run_sweep_job(a.scan, o);
+  const std::vector<std::string> files = write_sweep_outputs(r, a.out);
+  const RevolutionRecovery& v = r.revolution;
+  if (!a.quiet) {
+    std::printf(
+        "%s: %ld points, surface of revolution, axis through (%.9g, %.9g, %.9g) along (%.9g, %.9g, "
+        "%.9g)\n",
+        r.input.filename().string().c_str(), static_cast<long>(r.points.cols()), v.axis.point.x(),
+        v.axis.point.y(), v.axis.point.z(), v.axis.direction.x(), v.axis.direction.y(),
+        v.axis.direction.z());
+    std::printf(
+        "%zu profile loop(s), surface degree (2, %d); distance of all points rms %.4g, p95 %.4g, "
+        "max %.4g mm\n",
+        v.profile.loops.size(), v.surfaces.empty() ? 0 : v.surfaces[0].degree_v(), v.error.rms,
+        v.error.p95, v.error.max);
+    std::printf("wrote %zu files to %s (%.0f ms)\n", files.size(),
+                std::filesystem::absolute(a.out).string().c_str(), r.total_seconds * 1e3);
+  }
+  if (!a.tol.empty() && !r.tolerance_met())
+    throw NumericalError("--tol " + a.tol + " mm not met: the max distance is " +
+                         number_text(v.error.max) + " mm (" + std::to_string(v.unexplained) +
+                         " points farther; report in " + a.out + ")");
+}
+
+}  // namespace
+
+void add_sweep_command(CLI::App& app) {
+  auto args = std::make_shared<SweepArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "sweep",
+      "Recover the exact surface of revolution of a scanned or meshed turned part (Kantz 2003):\n"
+      "the axis (PCA, refined by Gauss-Newton on ring clusters or profile residuals), every point\n"
+      "projected to the meridian plane, the profile fitted to a tolerance with corners and poles,\n"
+      "revolved exactly (degree (2, p)). SCAN is any file fit reads (xyz/csv, PLY, STL, OBJ, "
+      "OFF).\n"
+      "Writes surface.igs/.stp/.x3d, profile.igs/.dxf/.svg, deviation.ply, preview.svg,\n"
+      "report.json and report.html. Exit 1 when --tol is not met (files written), 2 on bad input.");
+  cmd->add_option("scan", args->scan, "point cloud or mesh file")->required();
+  cmd->add_option("--out", args->out, "output directory (created if missing)")->required();
+  cmd->add_option("--kind", args->kind,
+                  "auto|revolution|extrusion (extrusion: not implemented yet)");
+  cmd->add_option("--axis", args->axis, "X,Y,Z: the axis direction (default: PCA, refined)");
+  cmd->add_option("--center", args->center, "X,Y,Z: a point on the axis (with --axis)");
+  cmd->add_option("--tol", args->tol,
+                  "max distance of every point to the surface [mm] (default 1e-4 of the size)");
+  cmd->add_option("--degree", args->degree, "profile degree p (default 3)");
+  cmd->add_option("--corner-angle", args->corner_angle,
+                  "turning angle of a profile corner [deg] (default 30)");
+  cmd->add_option("--threads", args->threads, "worker threads (default 2)");
+  cmd->add_flag("--skip-bad", args->skip_bad, "drop unreadable records instead of failing");
+  cmd->add_flag("--quiet,-q", args->quiet, "print nothing but errors");
+  cmd->callback([args] { run(*args); });
+}
+
+}  // namespace polarform::cli
