@@ -42,8 +42,9 @@ CylindricalFit fit_cylindrical(const Eigen::Matrix3Xd& points, const Cylindrical
         << frame.frame.origin.transpose() << ") along (" << frame.frame.axes.col(2).transpose()
         << "): rays from it cross the data more than once at "
         << describe_folds(check, "z", 1.0, "theta (deg)", kDegreesPerRadian / rbar) << "; noise "
-        << check.noise << ". Choose another axis, try the spherical fit, or use a "
-        << "general (parametric) surface fitter";
+        << check.noise
+        << ". Choose another axis or try the spherical fit; a turned part (a wall with two "
+        << "skins, steps) is recovered by `polarform sweep`";
     return InputError(msg.str());
   };
   if (opt.check_single_valued) {

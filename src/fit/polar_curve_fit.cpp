@@ -61,7 +61,7 @@ PolarCurveFit fit_polar_curve(const Eigen::Matrix2Xd& points, const PolarFitOpti
     msg << "polar curve fit: the data is not single-valued about the centre (" << centre.x() << ", "
         << centre.y() << "): rays from it cross the data more than once at "
         << describe_folds(check, "theta (deg)", kDegreesPerRadian) << "; noise " << check.noise
-        << ". Choose another centre, split the data, or use a general (parametric) fitter";
+        << ". Choose another centre or split the data into single-valued pieces";
     return InputError(msg.str());
   };
   if (opt.check_single_valued) {

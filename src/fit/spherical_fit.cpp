@@ -86,8 +86,8 @@ SphericalFit fit_spherical(const Eigen::Matrix3Xd& points, const SphericalFitOpt
         << frame.frame.origin.transpose() << "): rays from it cross the data more than once at "
         << describe_folds(check, "phi (deg)", kDegreesPerRadian, "theta (deg)", kDegreesPerRadian)
         << "; noise " << check.noise
-        << ". Choose another centre, try the cylindrical fit, or use a general "
-        << "(parametric) surface fitter";
+        << ". Choose another centre or try the cylindrical fit; a turned part (a wall with two "
+        << "skins, steps) is recovered by `polarform sweep`";
     return InputError(msg.str());
   };
   if (opt.check_single_valued) {
