@@ -8,6 +8,7 @@
 #include "export/step_geometry.h"
 #include "export/step_product.h"
 #include "src/error.h"
+#include "src/nurbs/extrusion.h"
 
 namespace polarform {
 
@@ -93,15 +94,7 @@ StepWall step_profile_wall(StepFile& f, StepTopology& topo, const NurbsCurve2d& 
       topo.edge(v_high, v_high, step_bspline_curve(f, translated(curve, z1 * z), tolerance, ""));
   const int seam = topo.edge(v_low, v_high, step_line(f, start, z));
   // Its normal C'(u) x z points out of the enclosed region for a counter-clockwise C.
-  NurbsSurface::Points points;
-  std::vector<double> weights;
-  for (int i = 0; i < ccw_profile.size(); ++i)
-    for (double level : {z0, z1}) {
-      points.push_back(curve.control_point(i) + level * z);
-      weights.push_back(ccw_profile.weight(i));
-    }
-  const NurbsSurface side(ccw_profile.degree(), 1, ccw_profile.knots(), {z0, z0, z1, z1}, points,
-                          weights);
+  const NurbsSurface side = extrude(curve, z, z0, z1);
   w.face = topo.face({{wall_loop(topo, w.low, seam, w.high, outward), true}},
                      step_bspline_surface(f, side, tolerance), outward);
   return w;

@@ -5,25 +5,11 @@
 #include <chrono>
 #include <string>
 
+#include "designers/sweep/recovery_steps.h"
 #include "src/error.h"
 #include "src/nurbs/surface_of_revolution.h"
 
 namespace polarform {
-
-namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-Eigen::Matrix3Xd strided(const Eigen::Matrix3Xd& P, int max_points) {
-  const Eigen::Index stride = std::max<Eigen::Index>(1, (P.cols() + max_points - 1) / max_points);
-  Eigen::Matrix3Xd sub(3, (P.cols() + stride - 1) / stride);
-  for (Eigen::Index k = 0; k < sub.cols(); ++k) sub.col(k) = P.col(k * stride);
-  return sub;
-}
-
-}  // namespace
 
 // NURBS Book A8.1 on the profile placed in a meridian plane: (z, r) ↦ c + z a + r e.
 NurbsSurface revolve_meridian(const NurbsCurve2d& profile, const AxisLine& axis) {
@@ -39,13 +25,7 @@ NurbsSurface revolve_meridian(const NurbsCurve2d& profile, const AxisLine& axis)
 }
 
 RevolutionRecovery recover_revolution(const Eigen::Matrix3Xd& points, const RevolutionOptions& o) {
-  if (points.cols() < 8)
-    throw InputError("revolution recovery: " + std::to_string(points.cols()) +
-                     " points, need at least 8");
-  if (!points.allFinite())
-    throw InputError("revolution recovery: a point has a non-finite coordinate");
-  if (o.axis_direction && !(o.axis_direction->norm() > 0.0))
-    throw InputError("revolution recovery: the axis direction is zero");
+  check_sweep_input(points, o.axis_direction, "revolution recovery");
   RevolutionRecovery out;
   auto t0 = std::chrono::steady_clock::now();
   out.size = (points.rowwise().maxCoeff() - points.rowwise().minCoeff()).norm();

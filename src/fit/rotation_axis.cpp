@@ -13,15 +13,15 @@
 
 namespace polarform {
 
-namespace {
-
-// Two unit vectors completing the axis direction to an orthonormal frame.
+// Gram–Schmidt of x (of y when |a_x| >= 0.6) against a.
 std::pair<Eigen::Vector3d, Eigen::Vector3d> normal_pair(const Eigen::Vector3d& a) {
   const Eigen::Vector3d t =
       std::abs(a.x()) < 0.6 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
   const Eigen::Vector3d e1 = (t - t.dot(a) * a).normalized();
   return {e1, a.cross(e1)};
 }
+
+namespace {
 
 // ∂(z, r)/∂(α, β, γ, δ) for a(α, β) = normalize(a + α e1 + β e2), c(γ, δ) = c + γ e1 + δ e2, at 0:
 // ∂z = (e1·w, e2·w, 0, 0), ∂r = (−z u·e1, −z u·e2, −u·e1, −u·e2), w = p − c, u = (w − z a)/r.

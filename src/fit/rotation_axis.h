@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 #include <functional>
+#include <utility>
 
 namespace polarform {
 
@@ -15,6 +16,9 @@ struct AxisLine {
   Eigen::Vector3d point = Eigen::Vector3d::Zero();
   Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();  // unit
 };
+
+// Two unit vectors e1, e2 completing the unit direction a to a right-handed frame (e1 × e2 = a).
+std::pair<Eigen::Vector3d, Eigen::Vector3d> normal_pair(const Eigen::Vector3d& a);
 
 // (z, r) per point: z = a·(p − c), r = |(p − c) − z a| (spec K11 step 2). Parallel over `threads`.
 Eigen::Matrix2Xd meridian_coordinates(const Eigen::Matrix3Xd& points, const AxisLine& axis,
