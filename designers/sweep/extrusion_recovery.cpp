@@ -133,10 +133,10 @@ ExtrusionRecovery recover_extrusion(const Eigen::Matrix3Xd& points, const Extrus
 
   t0 = std::chrono::steady_clock::now();
   // Every point lies within the extent, so its 3D distance is its section-plane distance.
-  out.distances = meridian_distances(out.section, out.projected, o.threads).distance;
-  out.error = error_stats(out.distances);
-  for (Eigen::Index k = 0; k < out.distances.size(); ++k)
-    out.unexplained += std::abs(out.distances[k]) > out.tolerance;
+  PointErrors e = point_errors(out.section, out.projected, out.tolerance, o.threads);
+  out.distances = std::move(e.distances);
+  out.error = e.error;
+  out.unexplained = e.unexplained;
   out.timings_s.error = seconds_since(t0);
   return out;
 }

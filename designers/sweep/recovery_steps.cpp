@@ -2,6 +2,7 @@
 #include "designers/sweep/recovery_steps.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "src/error.h"
 
@@ -26,6 +27,16 @@ void check_sweep_input(const Eigen::Matrix3Xd& points,
   if (direction && !(direction->norm() > 0.0))
     throw InputError(what + ": the " + (what.starts_with("revolution") ? "axis " : "") +
                      "direction is zero");
+}
+
+PointErrors point_errors(const MeridianProfile& profile, const Eigen::Matrix2Xd& plane_points,
+                         double tolerance, int threads) {
+  PointErrors out;
+  out.distances = meridian_distances(profile, plane_points, threads).distance;
+  out.error = error_stats(out.distances);
+  for (Eigen::Index k = 0; k < out.distances.size(); ++k)
+    out.unexplained += std::abs(out.distances[k]) > tolerance;
+  return out;
 }
 
 }  // namespace polarform

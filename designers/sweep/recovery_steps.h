@@ -6,10 +6,25 @@
 
 #include <Eigen/Core>
 #include <chrono>
+#include <cstddef>
 #include <optional>
 #include <string>
 
+#include "designers/sweep/meridian_profile.h"
+#include "src/fit/error_stats.h"
+
 namespace polarform {
+
+// The errors of every point: signed distances of its plane coordinates to the profile's curves
+// (the true 3D distances for a surface of revolution and an extrusion alike), their statistics
+// and the count beyond the tolerance.
+struct PointErrors {
+  Eigen::VectorXd distances;
+  ErrorStats error;
+  std::size_t unexplained = 0;
+};
+PointErrors point_errors(const MeridianProfile& profile, const Eigen::Matrix2Xd& plane_points,
+                         double tolerance, int threads);
 
 double seconds_since(std::chrono::steady_clock::time_point t0);
 

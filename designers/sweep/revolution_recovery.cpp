@@ -101,10 +101,10 @@ RevolutionRecovery recover_revolution(const Eigen::Matrix3Xd& points, const Revo
 
   t0 = std::chrono::steady_clock::now();
   // For a surface of revolution the 3D distance equals the (z, r) distance to the profile.
-  out.distances = meridian_distances(out.profile, out.meridian, o.threads).distance;
-  out.error = error_stats(out.distances);
-  for (Eigen::Index k = 0; k < out.distances.size(); ++k)
-    out.unexplained += std::abs(out.distances[k]) > out.tolerance;
+  PointErrors e = point_errors(out.profile, out.meridian, out.tolerance, o.threads);
+  out.distances = std::move(e.distances);
+  out.error = e.error;
+  out.unexplained = e.unexplained;
   out.timings_s.error = seconds_since(t0);
   return out;
 }
