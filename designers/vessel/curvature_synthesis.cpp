@@ -6,6 +6,7 @@
 #include <nlopt.hpp>
 #include <numbers>
 
+#include "designers/vessel/nlopt_stop_reason.h"
 #include "designers/vessel/polar_curvature.h"
 #include "designers/vessel/synthesis_objective.h"
 #include "designers/vessel/synthesis_space.h"
@@ -158,17 +159,13 @@ SynthesisResult synthesize_profile(const SynthesisProblem& problem) {
   out.stationarity =
       C.rows() == 0 ? gradient.norm()
                     : (gradient - C.transpose() * (C * C.transpose()).ldlt().solve(C * gradient)).norm();
-  switch (status) {
-    case nlopt::SUCCESS: out.termination = "success"; break;
-    case nlopt::FTOL_REACHED: out.termination = "objective tolerance reached"; break;
-    case nlopt::XTOL_REACHED: out.termination = "step tolerance reached"; break;
-    case nlopt::ROUNDOFF_LIMITED: out.termination = "round-off limited"; break;
-    default:
-      throw NumericalError(
-          "synthesis: SLSQP did not converge within " + std::to_string(settings.max_iterations) +
-          " evaluations (objective " + to_text(out.objective) + ", projected gradient " +
-          to_text(out.stationarity) + "); raise <synthesis> max-iterations or smoothing");
-  }
+  const char* reason = nlopt_stop_reason(status);
+  if (!reason)
+    throw NumericalError(
+        "synthesis: SLSQP did not converge within " + std::to_string(settings.max_iterations) +
+        " evaluations (objective " + to_text(out.objective) + ", projected gradient " +
+        to_text(out.stationarity) + "); raise <synthesis> max-iterations or smoothing");
+  out.termination = reason;
 
   const Eigen::VectorXd ordinates = L * (space.map * xv);
   out.profile = BSplineFunction(space.degree, space.knots, ordinates);

@@ -32,7 +32,7 @@ std::vector<EdgeBending> edge_bending(const HeadShape& shape, const VesselLoad& 
                                       double poisson) {
   if (!(poisson >= 0.0 && poisson < 0.5))
     throw InputError("edge bending: Poisson's ratio " + to_text(poisson) + ", expected [0, 0.5)");
-  membrane_stresses(shape.profile, load, 2);  // validates the load
+  check_vessel_load(load);
   const double t = load.thickness, p = load.pressure;
   const double root = std::pow(3 * (1 - poisson * poisson), 0.25);
   std::vector<EdgeBending> out;

@@ -39,7 +39,7 @@ struct EdgeBending {
 // Every curvature jump of the head on θ in [0, π/2) (the revolved A half), for the wall thickness
 // and pressure of `load` and Poisson's ratio ν. A kink of the meridian (a cone meeting the
 // cylinder without a knuckle) is not a curvature jump and is not covered: none is returned for it.
-// Throws InputError unless 0 <= ν < 0.5 and the load is valid (membrane_stresses).
+// Throws InputError unless 0 <= ν < 0.5 and the load is valid (check_vessel_load).
 std::vector<EdgeBending> edge_bending(const HeadShape& shape, const VesselLoad& load,
                                       double poisson = 0.3);
 

@@ -130,11 +130,15 @@ MembraneForces membrane_forces(double pressure, double kappa1, double r2) {
   return {pressure * r2 / 2, pressure * r2 * (1 - kappa1 * r2 / 2)};
 }
 
-StressProfile membrane_stresses(const PolarFunction& head, const VesselLoad& load, int samples) {
+void check_vessel_load(const VesselLoad& load) {
   check_positive(load.radius, "radius", "mm");
   check_positive(load.length, "length", "mm");
   check_positive(load.thickness, "thickness", "mm");
   check_positive(load.pressure, "pressure", "MPa");
+}
+
+StressProfile membrane_stresses(const PolarFunction& head, const VesselLoad& load, int samples) {
+  check_vessel_load(load);
   if (samples < 2)
     throw InputError("membrane stresses: " + std::to_string(samples) + " samples, expected >= 2");
 

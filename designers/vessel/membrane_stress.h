@@ -39,6 +39,10 @@ struct VesselLoad {
   double pressure = 0.0;   // internal pressure, MPa
 };
 
+// Throws InputError ("membrane stresses: <name> …, expected > 0") unless radius, length,
+// thickness and pressure are > 0 and finite.
+void check_vessel_load(const VesselLoad& load);
+
 struct StressSample {
   double s = 0.0;       // meridian arc length from junction A, mm (negative on the cylinder)
   double theta = 0.0;   // polar angle on the head, rad (0 on the cylinder)

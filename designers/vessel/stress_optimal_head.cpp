@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "designers/vessel/meridian_arcs.h"
+#include "designers/vessel/nlopt_stop_reason.h"
 #include "designers/vessel/polar_curvature.h"
 #include "designers/vessel/synthesis_space.h"
 #include "src/error.h"
@@ -246,26 +247,11 @@ StressOptimalHead minimum_peak_stress_head(double radius, double depth,
 
   StressOptimalHead out;
   out.iterations = problem.evaluations;
-  switch (status) {
-    case nlopt::SUCCESS:
-      out.termination = "success";
-      break;
-    case nlopt::FTOL_REACHED:
-      out.termination = "objective tolerance reached";
-      break;
-    case nlopt::XTOL_REACHED:
-      out.termination = "step tolerance reached";
-      break;
-    case nlopt::ROUNDOFF_LIMITED:
-      out.termination = "round-off limited";
-      break;
-    case nlopt::MAXEVAL_REACHED:
-      out.termination = "evaluation limit reached";
-      break;
-    default:
-      throw NumericalError("minimum-stress head: SLSQP stopped with NLopt status " +
-                           std::to_string(static_cast<int>(status)));
-  }
+  const char* reason = nlopt_stop_reason(status);
+  if (!reason && status != nlopt::MAXEVAL_REACHED)
+    throw NumericalError("minimum-stress head: SLSQP stopped with NLopt status " +
+                         std::to_string(static_cast<int>(status)));
+  out.termination = reason ? reason : "evaluation limit reached";  // then checked for feasibility
   std::vector<double> c(constraints);
   problem.evaluate(z.data(), c.data(), nullptr);
   const double violation =

@@ -178,11 +178,10 @@ VesselSolution solve_minimum_stress(const VesselDesign& design, const VesselLoad
         "vessel: a minimum-stress head needs <head depth> or a preset to take it from");
   const double depth =
       design.depth ? *design.depth : head_shape(*design.preset, design.radius).depth;
-  StressOptimalSettings settings;
-  settings.junction_curvature = design.junction_kappa;
   VesselSolution out;
   MinimumStressDesign m;
-  m.head = minimum_peak_stress_head(design.radius, depth, settings);
+  m.settings.junction_curvature = design.junction_kappa;
+  m.head = minimum_peak_stress_head(design.radius, depth, m.settings);
   out.profile = head_polar_function(m.head.profile);
   out.curvature = sample_curvature(out.profile, 360);
   analyse_head(out, load, design.poisson);

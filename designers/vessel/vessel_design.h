@@ -72,6 +72,7 @@ struct PresetComparison {
 
 // A minimum-stress head with the standard heads of its depth under the same load.
 struct MinimumStressDesign {
+  StressOptimalSettings settings;  // the optimiser's, as run
   StressOptimalHead head;
   HeadStressSummary stresses;  // of the designed head, at the exact extrema
   DepthComparison same_depth;

@@ -131,7 +131,7 @@ json head_stresses_json(const HeadStressSummary& h) {
 
 // The minimum-stress head (stress_optimal_head.h) and the standard heads of its depth.
 json minimum_stress_json(const VesselDesign& d, const MinimumStressDesign& m) {
-  const StressOptimalSettings settings;
+  const StressOptimalSettings& settings = m.settings;
   json same_depth = json::array();
   double best = 0.0;
   for (const HeadStressSummary& h : m.same_depth.references) {
