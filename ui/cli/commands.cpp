@@ -10,6 +10,7 @@ void register_commands(CLI::App& app) {
   add_viz_command(app);
   add_scan_cam_command(app);
   add_sweep_command(app);
+  add_patch_command(app);
 }
 
 }  // namespace polarform::cli

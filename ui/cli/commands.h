@@ -50,5 +50,6 @@ void add_fit_command(CLI::App& app);
 void add_viz_command(CLI::App& app);
 void add_scan_cam_command(CLI::App& app);
 void add_sweep_command(CLI::App& app);
+void add_patch_command(CLI::App& app);
 
 }  // namespace polarform::cli

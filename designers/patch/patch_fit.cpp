@@ -1,0 +1,119 @@
+#include "designers/patch/patch_fit.h"
+
+#include <chrono>
+#include <cmath>
+#include <string>
+
+#include "src/error.h"
+#include "src/nurbs/coons_surface.h"
+
+namespace polarform {
+
+namespace {
+
+double seconds(std::chrono::steady_clock::time_point& t0) {
+  const auto t1 = std::chrono::steady_clock::now();
+  const double s = std::chrono::duration<double>(t1 - t0).count();
+  t0 = t1;
+  return s;
+}
+
+Eigen::Matrix3Xd columns(const Eigen::Matrix3Xd& m, const std::vector<int>& idx) {
+  Eigen::Matrix3Xd out(3, static_cast<Eigen::Index>(idx.size()));
+  for (std::size_t k = 0; k < idx.size(); ++k)
+    out.col(static_cast<Eigen::Index>(k)) = m.col(idx[k]);
+  return out;
+}
+
+Eigen::VectorXd entries(const Eigen::VectorXd& x, const std::vector<int>& idx) {
+  Eigen::VectorXd out(static_cast<Eigen::Index>(idx.size()));
+  for (std::size_t k = 0; k < idx.size(); ++k) out[static_cast<Eigen::Index>(k)] = x[idx[k]];
+  return out;
+}
+
+}  // namespace
+
+PatchFit fit_patch(const Eigen::Matrix3Xd& points, const PatchBoundary& boundary,
+                   const PatchFitOptions& o) {
+  if (points.cols() < 16)
+    throw InputError("patch: " + std::to_string(points.cols()) +
+                     " points inside the boundary, expected at least 16");
+  if (!points.allFinite()) throw InputError("patch: a point has a non-finite coordinate");
+  if (o.thin < 0 || o.thin >= 1)
+    throw InputError("thinning tolerance " + std::to_string(o.thin) +
+                     ": expected a fraction in [0, 1)");
+  ProgressRange progress(o.progress, 0.0, 1.0);
+  PatchFit r;
+  auto t = std::chrono::steady_clock::now();
+  // P1, P4–P6: the bilinear Coons patch parametrises every point.
+  r.bilinear = bilinear_coons(boundary);
+  PatchSearchOptions search = o.search;
+  search.threads = o.threads;
+  r.decomposition = decompose_surface(r.bilinear, o.decomposition);
+  r.timings_s.decomposition += seconds(t);
+  r.plane = max_area_plane(r.decomposition.blanket);
+  r.parameters = parametrize_on_blanket(points, r.bilinear, r.decomposition.blanket, search);
+  r.timings_s.search += seconds(t);
+  progress.sub(0.0, 0.3)(1.0);
+  // P2–P3: a better base, fitted on a share at the bilinear parameters, parametrises them again.
+  BaseSurfaceOptions base = o.base;
+  base.threads = o.threads;
+  r.base = build_base_surface(boundary, points, r.parameters.u, r.parameters.v, base);
+  r.timings_s.base += seconds(t);
+  if (base.kind != BaseKind::bilinear) {
+    r.decomposition = decompose_surface(r.base.surface, o.decomposition);
+    r.timings_s.decomposition += seconds(t);
+    r.plane = max_area_plane(r.decomposition.blanket);
+    r.parameters = parametrize_on_blanket(points, r.base.surface, r.decomposition.blanket, search);
+    r.timings_s.search += seconds(t);
+  }
+  progress.sub(0.0, 0.5)(1.0);
+  // P7: thinning keeps the points nearest to the vertices of a finer blanket.
+  std::vector<int> kept;
+  if (o.thin > 0) {
+    r.thinning = thin_by_base(points, r.base.surface, o.thin, o.decomposition.split);
+    kept = r.thinning->kept;
+    r.timings_s.thinning += seconds(t);
+  }
+  // B2: the final fit with the boundary fixed.
+  SurfaceFitOptions f;
+  f.degree_u = o.degree_u;
+  f.degree_v = o.degree_v;
+  f.control_u = o.control_u;
+  f.control_v = o.control_v;
+  f.tolerance = o.tolerance;
+  f.boundary = boundary;
+  f.correction_rounds = o.correction_rounds;
+  f.threads = o.threads;
+  r.fit = kept.empty() ? fit_surface(points, r.parameters.u, r.parameters.v, f)
+                       : fit_surface(columns(points, kept), entries(r.parameters.u, kept),
+                                     entries(r.parameters.v, kept), f);
+  r.timings_s.fit += seconds(t);
+  progress.sub(0.5, 0.9)(1.0);
+  // Every point's true distance to the final surface, by Newton from its base parameters (the
+  // fitted points from their final parameters), signed by the surface normal.
+  r.u = r.parameters.u;
+  r.v = r.parameters.v;
+  if (kept.empty()) {
+    r.u = r.fit.u;
+    r.v = r.fit.v;
+  } else {
+    for (std::size_t k = 0; k < kept.size(); ++k) {
+      r.u[kept[k]] = r.fit.u[static_cast<Eigen::Index>(k)];
+      r.v[kept[k]] = r.fit.v[static_cast<Eigen::Index>(k)];
+    }
+  }
+  const Eigen::VectorXd d = distances_from_parameters(r.fit.surface, points, r.u, r.v, o.threads);
+  r.distances.resize(d.size());
+  for (Eigen::Index k = 0; k < d.size(); ++k) {
+    const Eigen::Vector3d n = r.fit.surface.normal(r.u[k], r.v[k]);
+    const Eigen::Vector3d off = points.col(k) - r.fit.surface.point(r.u[k], r.v[k]);
+    r.distances[k] = off.dot(n) < 0 ? -d[k] : d[k];
+  }
+  r.error = error_stats(r.distances);
+  r.timings_s.error += seconds(t);
+  progress(1.0);
+  return r;
+}
+
+}  // namespace polarform
