@@ -1,11 +1,14 @@
 #include "src/nurbs/knot_removal.h"
 
+#include <Eigen/Cholesky>
 #include <algorithm>
 #include <string>
 
 #include "src/error.h"
 #include "src/nurbs/error_text.h"
+#include "src/nurbs/knot_insertion.h"
 #include "src/nurbs/knot_remover.h"
+#include "src/nurbs/knots.h"
 
 namespace polarform {
 
@@ -97,6 +100,58 @@ BSplineSurface remove_removable_knots_v(const BSplineSurface& s, double tol) {
   return BSplineSurface::from_along_v(
       remove_removable_knots(s.along_v(), tol, s.dim(), "remove_removable_knots_v"), s.degree_u(),
       s.knots_u(), s.dim());
+}
+
+LeastSquaresRemoval remove_knot_least_squares(const BSpline& c, double u, int point_dim) {
+  const char* what = "remove_knot_least_squares";
+  if (!(u > c.front() && u < c.back()))
+    throw InputError(std::string(what) + ": u = " + to_text(u) + " is not inside the domain (" +
+                     to_text(c.front()) + ", " + to_text(c.back()) + ")");
+  if (multiplicity(c.knots(), u) != 1)
+    throw InputError(std::string(what) + ": u = " + to_text(u) + " is not a simple knot");
+  const int p = c.degree();
+  const Knots& U = c.knots();
+  const int r = static_cast<int>(std::find(U.begin(), U.end(), u) - U.begin());
+  Knots reduced = U;
+  reduced.erase(reduced.begin() + r);
+  const Eigen::MatrixXd& Q = c.coefs();
+  Eigen::MatrixXd P(Q.rows(), Q.cols() - 1);
+  P.leftCols(r - p) = Q.leftCols(r - p);                  // P_i = Q_i, i < r − p
+  P.rightCols(Q.cols() - r) = Q.rightCols(Q.cols() - r);  // P_i = Q_{i+1}, i >= r − 1
+  // Unknowns x_k = P_{r−p+k}, k = 0..p−2; equation e = 0..p−1 is row i = r−p+e:
+  // α_i x_{e} + (1 − α_i) x_{e−1} = Q_i, with x_{−1} = P_{r−p−1} and x_{p−1} = P_{r−1} known.
+  const int m = p - 1;
+  if (m > 0) {
+    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(p, m);
+    Eigen::MatrixXd rhs(p, Q.rows());
+    for (int e = 0; e < p; ++e) {
+      const int i = r - p + e;
+      const double alpha =
+          (u - reduced[static_cast<std::size_t>(i)]) /
+          (reduced[static_cast<std::size_t>(i + p)] - reduced[static_cast<std::size_t>(i)]);
+      rhs.row(e) = Q.col(i).transpose();
+      if (e < m)
+        A(e, e) = alpha;
+      else
+        rhs.row(e) -= alpha * P.col(r - 1).transpose();
+      if (e > 0)
+        A(e, e - 1) = 1 - alpha;
+      else
+        rhs.row(e) -= (1 - alpha) * P.col(r - p - 1).transpose();
+    }
+    const Eigen::MatrixXd x = (A.transpose() * A).ldlt().solve(A.transpose() * rhs);  // (8.28)
+    for (int k = 0; k < m; ++k) P.col(r - p + k) = x.row(k).transpose();
+  }
+  LeastSquaresRemoval out{BSpline(p, reduced, P), 0.0};
+  const BSpline back = insert_knot(out.spline, u, 1);
+  const int d = point_dim > 0 ? point_dim : c.dim();
+  if (c.dim() % d != 0)
+    throw InputError(std::string(what) + ": point dimension " + std::to_string(d) +
+                     " does not divide " + std::to_string(c.dim()));
+  const Eigen::MatrixXd moved = back.coefs() - Q;
+  for (int b = 0; b < c.dim(); b += d)
+    out.bound = std::max(out.bound, moved.middleRows(b, d).colwise().norm().maxCoeff());
+  return out;
 }
 
 }  // namespace polarform
