@@ -92,9 +92,16 @@ ProfileFit fit_profile(const FitInput& in, const CloudPlane& plane, const FitJob
   if (o.center) po.centre = plane.frame.to_local(*o.center).head<2>();
   const Eigen::Matrix2Xd local = plane.frame.to_local(in.points).topRows(2);
   PolarCurveFit polar = fit_polar_curve(local, po);
+  std::optional<ProfileFairing> fairing;
+  std::optional<ProfileInterrogation> before;
+  if (o.fairing) {
+    before = interrogate_profile(polar);
+    fairing = fair_polar_curve(polar, local, *o.fairing);
+  }
   NurbsCurve3d curve = curve_in_space(polar.curve, plane.frame);
   ProfileInterrogation interrogation = interrogate_profile(polar);
-  return {std::move(polar), std::move(curve), std::move(interrogation)};
+  return {std::move(polar), std::move(curve), std::move(interrogation), std::move(fairing),
+          std::move(before)};
 }
 
 // A closed pole that creases or rests on no data (SphericalFit::north_check, south_check).
@@ -180,6 +187,9 @@ FitJobResult fit_cloud(FitInput in, const FitJobOptions& o) {
   // Automatic on a planar cloud: a given axis is the profile plane's normal.
   if (polar && o.method == FitJobMethod::automatic && o.axis)
     plane = naming_input(in.file.string(), [&] { return fit_plane(in.points, o.axis); });
+  if (o.fairing && !polar)
+    throw InputError("--fair: fairing is implemented for profiles (polar fits); this cloud is " +
+                     plane_text(plane) + ", fitted as a surface");
   const RotationalFitOptions rotational = polar ? RotationalFitOptions{} : rotational_options(o);
   std::variant<ProfileFit, RotationalFit> fit = naming_input(in.file.string(), [&] {
     return polar ? std::variant<ProfileFit, RotationalFit>(fit_profile(in, plane, o))

@@ -18,6 +18,7 @@
 #include "jobs/fit/profile_interrogation.h"
 #include "jobs/project/fit_project.h"
 #include "src/fit/polar_curve_fit.h"
+#include "src/fit/profile_fairing.h"
 #include "src/fit/rotational_fit.h"
 
 namespace polarform {
@@ -41,6 +42,8 @@ struct FitJobOptions {
   ArcKind base = ArcKind::rqb;    // the base circles' arcs
   RevolutionMode revolution =
       RevolutionMode::automatic;  // F constant around the axis: test / force
+  // Profiles: fair F after the fit (MIT §8.2.3); the curve's move and new error are measured.
+  std::optional<ProfileFairingOptions> fairing;
   int threads = 2;
   ProgressFn read_progress;  // fraction of the file read
   ProgressFn fit_progress;   // fraction of the fit done (restarts when auto tries a second method)
@@ -69,6 +72,8 @@ struct ProfileFit {
   PolarCurveFit polar;
   NurbsCurve3d curve;
   ProfileInterrogation interrogation;  // of polar.curve: curvature.svg/.csv, report.json
+  std::optional<ProfileFairing> fairing;               // when asked: what it did
+  std::optional<ProfileInterrogation> before_fairing;  // the curve as fitted, before fairing
 };
 
 // Stage 3: the fit and the measured point-to-geometry error of every input point.

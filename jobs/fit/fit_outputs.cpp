@@ -269,8 +269,10 @@ json fit_report_fields(const FitJobResult& r) {
                      {"largest_mm", o.largest}};
   }
   j["warnings"] = r.warnings;
-  if (const auto* profile = std::get_if<ProfileFit>(&r.fit))
+  if (const auto* profile = std::get_if<ProfileFit>(&r.fit)) {
     j["interrogation"] = interrogation_json(profile->interrogation);
+    if (profile->fairing) j["fairing"] = fairing_json(*profile->fairing);
+  }
   return j;
 }
 
@@ -331,7 +333,8 @@ std::map<std::string, std::string> render_fit_outputs(const FitJobResult& r) {
   content["preview.svg"] = preview;
   if (profile) {
     content["curvature.svg"] = svg_document(
-        profile_curvature_figure(profile->interrogation, "polar angle θ about the centre [deg]"));
+        profile_curvature_figure(profile->interrogation, "polar angle θ about the centre [deg]",
+                                 profile->before_fairing ? &*profile->before_fairing : nullptr));
     content["curvature.csv"] = interrogation_csv(profile->interrogation);
   }
   const std::vector<std::string> files = fit_file_list(content);

@@ -61,4 +61,21 @@ nlohmann::ordered_json interrogation_json(const ProfileInterrogation& q) {
   return j;
 }
 
+nlohmann::ordered_json fairing_json(const ProfileFairing& f) {
+  nlohmann::ordered_json knots = nlohmann::ordered_json::array();
+  for (std::size_t k = 0; k < f.steps.size(); ++k)
+    knots.push_back({{"u", f.steps[k].u},
+                     {"u_deg", f.step_angle_deg[k]},
+                     {"jump_before", f.steps[k].jump_before},
+                     {"jump_after", f.steps[k].jump_after},
+                     {"bound_mm", f.steps[k].bound}});
+  return {{"method", fairing_method_name(f.method)},
+          {"tolerance_mm", f.tolerance},
+          {"passes", f.steps.size()},
+          {"knots_faired", knots},
+          {"max_jump_before", f.max_jump_before},
+          {"max_jump_after", f.max_jump_after},
+          {"measured_deviation_mm", f.measured_deviation}};
+}
+
 }  // namespace polarform

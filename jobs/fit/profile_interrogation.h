@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "src/fit/polar_curve_fit.h"
+#include "src/fit/profile_fairing.h"
 
 namespace polarform {
 
@@ -35,5 +36,9 @@ std::string interrogation_csv(const ProfileInterrogation& interrogation);
 // report.json's "interrogation": inflections_deg, derivative_order, max_derivative_jump and
 // max_derivative_jump_at_deg.
 nlohmann::ordered_json interrogation_json(const ProfileInterrogation& interrogation);
+
+// report.json's "fairing": method, tolerance_mm, passes, knots_faired[{u, u_deg, jump_before,
+// jump_after, bound_mm}], max_jump_before/after and measured_deviation_mm.
+nlohmann::ordered_json fairing_json(const ProfileFairing& fairing);
 
 }  // namespace polarform

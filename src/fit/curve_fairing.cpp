@@ -5,7 +5,6 @@
 #include <string>
 
 #include "src/error.h"
-#include "src/nurbs/curve_interpolation.h"
 #include "src/nurbs/knot_insertion.h"
 #include "src/nurbs/knot_removal.h"
 #include "src/nurbs/knots.h"
@@ -67,6 +66,11 @@ CurveFairing farin_fair(const BSpline& c, const FairingOptions& o, int point_dim
     for (const SplineKnotJump& j : jumps) {
       if (j.jump <= o.negligible_jump * largest) break;
       if (multiplicity(r.spline.knots(), j.u) != 1) continue;
+      const Knots& U = r.spline.knots();
+      const int at = static_cast<int>(std::find(U.begin(), U.end(), j.u) - U.begin());
+      const int p = r.spline.degree();
+      if (at - p < o.fixed_end_points || at - 1 > r.spline.size() - 1 - o.fixed_end_points)
+        continue;  // P_{at−p}..P_{at−1} move
       const LeastSquaresRemoval removal = remove_knot_least_squares(r.spline, j.u, point_dim);
       if (r.total_bound + removal.bound > o.tolerance) continue;
       const BSpline next = insert_knot(removal.spline, j.u, 1);
@@ -82,11 +86,11 @@ CurveFairing farin_fair(const BSpline& c, const FairingOptions& o, int point_dim
 }
 
 KjellanderFairing kjellander_fair(const Eigen::MatrixXd& values, const Eigen::VectorXd& t,
-                                  const FairingOptions& o) {
+                                  const FairingOptions& o, const CubicEnds& ends) {
   check(o, "kjellander_fair");
   const int N = static_cast<int>(values.cols());
   if (N < 5) throw InputError("kjellander_fair: " + std::to_string(N) + " points, expected >= 5");
-  KjellanderFairing r{interpolate_cubic(values, t), values, {}, 0.0};
+  KjellanderFairing r{interpolate_cubic(values, t, ends), values, {}, 0.0};
   const std::vector<SplineKnotJump> initial = top_derivative_jumps(r.spline);
   double largest = 0.0;
   for (const SplineKnotJump& j : initial) largest = std::max(largest, j.jump);
@@ -108,7 +112,7 @@ KjellanderFairing kjellander_fair(const Eigen::MatrixXd& values, const Eigen::Ve
     if (from_original > o.tolerance) break;
     const double move = (moved - r.values.col(J)).norm();
     r.values.col(J) = moved;
-    r.spline = interpolate_cubic(r.values, t);
+    r.spline = interpolate_cubic(r.values, t, ends);
     r.steps.push_back({t[J], worst, jump_at(top_derivative_jumps(r.spline), t[J]), move});
     r.max_data_move = std::max(r.max_data_move, from_original);
   }

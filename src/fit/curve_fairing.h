@@ -12,6 +12,7 @@
 
 #include "src/nurbs/bspline.h"
 #include "src/nurbs/bspline_surface.h"
+#include "src/nurbs/curve_interpolation.h"
 
 namespace polarform {
 
@@ -36,6 +37,9 @@ struct FairingOptions {
   int max_passes = 100;
   // A knot whose jump is at most this fraction of the largest initial jump is fair already.
   double negligible_jump = 1e-9;
+  // Farin: this many control points at each end never move (a closed curve keeps its seam
+  // C^{p−1} with `degree` of them); knots whose removal would move them are left alone.
+  int fixed_end_points = 0;
 };
 
 struct CurveFairing {
@@ -63,8 +67,9 @@ struct KjellanderFairing {
 // Hermite cubic of its neighbours (their values and the interpolant's tangents) evaluated at its
 // parameter, and re-interpolates; a pass that would move a point beyond the tolerance from its
 // original position ends the loop, as does a negligible jump or max_passes.
+// `ends` gives the interpolant's end tangents (natural ends where absent).
 KjellanderFairing kjellander_fair(const Eigen::MatrixXd& values, const Eigen::VectorXd& parameters,
-                                  const FairingOptions& options);
+                                  const FairingOptions& options, const CubicEnds& ends = {});
 
 struct SurfaceFairing {
   BSplineSurface surface;

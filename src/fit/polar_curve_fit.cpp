@@ -17,15 +17,13 @@
 
 namespace polarform {
 
-namespace {
-
-NurbsCurve2d translated(const NurbsCurve2d& c, const Eigen::Vector2d& t) {
+NurbsCurve2d polar_product_curve(const BSplineFunction& F, const BaseCircle& base,
+                                 const Eigen::Vector2d& centre) {
+  const NurbsCurve2d c = product(F, base.curve());
   Eigen::MatrixXd h = c.homogeneous().coefs();
-  h.topRows(2) += t * h.row(2);
+  h.topRows(2) += centre * h.row(2);
   return NurbsCurve2d(BSpline(c.degree(), c.knots(), std::move(h)));
 }
-
-}  // namespace
 
 // Bae 2002, §2.2 Steps 1-5.
 PolarCurveFit fit_polar_curve(const Eigen::Matrix2Xd& points, const PolarFitOptions& opt) {
@@ -108,7 +106,7 @@ PolarCurveFit fit_polar_curve(const Eigen::Matrix2Xd& points, const PolarFitOpti
   clock.lap();
   const BSplineSurface& Fs = fit.F;
   BSplineFunction F(Fs.degree_v(), Fs.knots_v(), Fs.coefs().row(0).transpose());
-  NurbsCurve2d curve = translated(product(F, base.curve()), centre);
+  NurbsCurve2d curve = polar_product_curve(F, base, centre);
   times.product = clock.lap();
 
   FitReport rep = make_report(fit, 0, curve.degree(), 1, curve.size(), trimmed.kept, threads,

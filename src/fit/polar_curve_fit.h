@@ -55,6 +55,10 @@ struct PolarCurveFit {
 // reach its tolerance.
 PolarCurveFit fit_polar_curve(const Eigen::Matrix2Xd& points, const PolarFitOptions& options = {});
 
+// C(u) = F(u)·B(u) + centre (Bae 2002, eq. (2.10)), exactly by the symbolic product.
+NurbsCurve2d polar_product_curve(const BSplineFunction& F, const BaseCircle& base,
+                                 const Eigen::Vector2d& centre);
+
 // A planar slice of a 3D cloud: the points within thickness/2 of the plane through `origin` with
 // normal `normal`, in the plane's coordinates (x along `x_direction` made orthogonal to normal).
 struct PlanarSlice {

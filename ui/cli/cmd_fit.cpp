@@ -22,7 +22,7 @@ struct FitArgs {
   std::string scan, out;
   // Empty: not given (the project's value, or the default).
   std::string method, closed, pole, degree, ctrl, tol, tol_measure, center, axis;
-  std::string fairness, lambda, base, revolution;
+  std::string fairness, lambda, base, revolution, fair, fair_tol, fair_passes;
   std::string threads = "2";
   bool skip_bad = false, reject_outliers = false, quiet = false, lenient = false;
 };
@@ -80,6 +80,22 @@ FitJobOptions job_options(const FitArgs& a, FitJobOptions o) {
   if (!a.revolution.empty())
     o.revolution = static_cast<RevolutionMode>(
         parse_choice("--revolution", a.revolution, {"auto", "yes", "no"}));
+  if (!a.fair.empty()) {
+    ProfileFairingOptions f;
+    f.method = parse_choice("--fair", a.fair, {"kjellander", "farin"}) == 0
+                   ? FairingMethod::kjellander
+                   : FairingMethod::farin;
+    o.fairing = f;
+  }
+  if ((!a.fair_tol.empty() || !a.fair_passes.empty()) && !o.fairing)
+    throw InputError("--fair-tol and --fair-passes need --fair kjellander|farin");
+  if (!a.fair_tol.empty()) {
+    o.fairing->tolerance = parse_numbers("--fair-tol", a.fair_tol, 1, 1)[0];
+    if (!(o.fairing->tolerance > 0))
+      throw InputError("--fair-tol '" + a.fair_tol + "': expected a positive number of mm");
+  }
+  if (!a.fair_passes.empty())
+    o.fairing->max_passes = parse_int_pair("--fair-passes", a.fair_passes, 1, 100000).first;
   o.threads = parse_int_pair("--threads", a.threads, 1, 256).first;
   o.skip_bad = o.skip_bad || a.skip_bad;
   o.reject_outliers = o.reject_outliers || a.reject_outliers;
@@ -185,6 +201,13 @@ void add_fit_command(CLI::App& app) {
                   "auto|yes|no: make F constant around the axis — an exact surface of revolution, "
                   "sphere-like form or circle (default auto: when an F-test of F(u) against "
                   "F(u, v) finds no variation beyond the noise at the 0.1 % level)");
+  cmd->add_option("--fair", args->fair,
+                  "kjellander|farin: fair a profile's F after the fit (MIT §8.2.3); curvature.svg "
+                  "shows before and after");
+  cmd->add_option("--fair-tol", args->fair_tol,
+                  "how far fairing may move the curve [mm] (default 3 × the fit's rms error)");
+  cmd->add_option("--fair-passes", args->fair_passes,
+                  "at most this many knots faired (default 100)");
   cmd->add_option("--threads", args->threads, "worker threads (default 2)");
   cmd->add_flag("--skip-bad", args->skip_bad,
                 "skip unparsable or non-finite records instead of stopping");

@@ -1,0 +1,108 @@
+#include "src/fit/profile_fairing.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "src/error.h"
+#include "src/fit/curve_distance.h"
+#include "src/fit/error_stats.h"
+#include "src/nurbs/knots.h"
+
+namespace polarform {
+
+namespace {
+
+double max_jump(const BSpline& F) {
+  double m = 0.0;
+  for (const SplineKnotJump& j : top_derivative_jumps(F)) m = std::max(m, j.jump);
+  return m;
+}
+
+// Kjellander on F's values at its distinct breakpoints, the end tangents kept.
+BSpline kjellander_on_function(const BSpline& F, const FairingOptions& o,
+                               std::vector<FairingStep>& steps) {
+  if (F.degree() != 3)
+    throw InputError("--fair kjellander: F has degree " + std::to_string(F.degree()) +
+                     "; Kjellander's fairing interpolates cubics (use --fair farin, or degree 3)");
+  std::vector<double> t;
+  for (const Breakpoint& b : breakpoints(F.knots())) {
+    if (b.value > F.front() && b.value < F.back() && b.multiplicity != 1)
+      throw InputError("--fair kjellander: F has a multiple knot at u = " +
+                       std::to_string(b.value) + "; use --fair farin");
+    t.push_back(b.value);
+  }
+  const Eigen::VectorXd params =
+      Eigen::Map<const Eigen::VectorXd>(t.data(), static_cast<Eigen::Index>(t.size()));
+  Eigen::MatrixXd values(F.dim(), params.size());
+  for (Eigen::Index k = 0; k < params.size(); ++k) values.col(k) = F.point(params[k]);
+  CubicEnds ends;
+  ends.start_tangent = F.derivatives(F.front(), 1).col(1);
+  ends.end_tangent = F.derivatives(F.back(), 1).col(1);
+  if (params.size() < 5) return F;  // too few breakpoints to move one
+  KjellanderFairing k = kjellander_fair(values, params, o, ends);
+  steps = std::move(k.steps);
+  return k.spline;
+}
+
+}  // namespace
+
+std::string fairing_method_name(FairingMethod method) {
+  return method == FairingMethod::farin ? "farin" : "kjellander";
+}
+
+ProfileFairing fair_polar_curve(PolarCurveFit& fit, const Eigen::Matrix2Xd& points,
+                                const ProfileFairingOptions& options) {
+  ProfileFairing r;
+  r.method = options.method;
+  r.tolerance = options.tolerance > 0 ? options.tolerance : 3.0 * fit.report.error.rms;
+  if (!(r.tolerance > 0))
+    throw InputError(
+        "fairing: the fit has no residual to estimate a tolerance from; give --fair-tol");
+  FairingOptions o;
+  o.tolerance = r.tolerance;
+  o.max_passes = options.max_passes;
+  const BSpline& F0 = fit.F.spline();
+  o.fixed_end_points = fit.closed ? F0.degree() : 0;
+  r.max_jump_before = max_jump(F0);
+  BSpline F1 = F0;
+  if (options.method == FairingMethod::farin) {
+    CurveFairing f = farin_fair(F0, o);
+    F1 = std::move(f.spline);
+    r.steps = std::move(f.steps);
+  } else {
+    F1 = kjellander_on_function(F0, o, r.steps);
+  }
+  r.max_jump_after = max_jump(F1);
+  const NurbsCurve2d before = fit.curve;
+  fit.F = BSplineFunction(F1);
+  fit.curve = polar_product_curve(fit.F, fit.base, fit.centre);
+  for (int k = 0; k <= 20000; ++k) {
+    const double u = before.front() + (before.back() - before.front()) * k / 20000;
+    r.measured_deviation =
+        std::max(r.measured_deviation, (fit.curve.point(u) - before.point(u)).norm());
+  }
+  for (const FairingStep& s : r.steps) {
+    const Eigen::Vector2d q = fit.curve.point(s.u) - fit.centre;
+    r.step_angle_deg.push_back(std::atan2(q.y(), q.x()) * 180 / std::numbers::pi);
+  }
+  // The error of the faired curve: true distances of every point, signed outward.
+  const CurveDistance<2> distance(fit.curve, fit.closed);
+  Eigen::VectorXd d(points.cols());
+  std::vector<char> left_out(static_cast<std::size_t>(points.cols()), 0);
+  for (const Eigen::Index k : fit.report.outliers.points) left_out[static_cast<std::size_t>(k)] = 1;
+  std::vector<double> kept;
+  for (Eigen::Index k = 0; k < points.cols(); ++k) {
+    const CurveDistance<2>::Foot f = distance.project(points.col(k));
+    const bool outside =
+        (points.col(k) - fit.centre).norm() >= (fit.curve.point(f.u) - fit.centre).norm();
+    d[k] = outside ? f.distance : -f.distance;
+    if (!left_out[static_cast<std::size_t>(k)]) kept.push_back(d[k]);
+  }
+  fit.report.signed_distance = d;
+  fit.report.error = error_stats(
+      Eigen::Map<const Eigen::VectorXd>(kept.data(), static_cast<Eigen::Index>(kept.size())));
+  return r;
+}
+
+}  // namespace polarform
