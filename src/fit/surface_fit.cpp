@@ -11,6 +11,7 @@
 #include <string>
 
 #include "src/error.h"
+#include "src/fit/fairness.h"
 #include "src/fit/parallel.h"
 #include "src/nurbs/basis.h"
 #include "src/nurbs/common_basis.h"
@@ -168,47 +169,20 @@ void assemble_points(BandSystem& sys, const Eigen::Matrix3Xd& points, const Eige
   }
 }
 
-// ∫ N_i^(d) N_k^(d) over the domain, banded ((n) × (2p+1)), by (p+1)-point Gauss per span.
-std::vector<double> gram(const Direction& dir, int d) {
-  static const double x[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563,
-                              0.8611363115940526};
-  static const double w[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461,
-                              0.3478548451374538};
-  const int p = dir.degree, n = dir.size(), width = 2 * p + 1;
-  std::vector<double> g(static_cast<std::size_t>(n) * width, 0.0);
-  std::vector<double> ders((d + 1) * (p + 1));
-  for (int s = p; s < n; ++s) {
-    const double a = dir.knots[s], b = dir.knots[s + 1];
-    if (b <= a) continue;
-    for (int k = 0; k < 4;
-         ++k) {  // 4 points: exact to degree 7 (≥ 2p − 2d for p ≤ 3; p > 3 approx.)
-      const double t = 0.5 * (a + b) + 0.5 * (b - a) * x[k];
-      ders_basis_funs(s, t, p, d, dir.knots, ders.data());
-      const double* Nd = ders.data() + d * (p + 1);
-      for (int i = 0; i <= p; ++i)
-        for (int j = 0; j <= p; ++j)
-          g[static_cast<std::size_t>(s - p + i) * width + (j - i + p)] +=
-              0.5 * (b - a) * w[k] * Nd[i] * Nd[j];
-    }
-  }
-  return g;
-}
-
 // λ ∫∫ |S_uu|² + 2|S_uv|² + |S_vv|² as tensor products of 1D Gram matrices (thin-plate energy).
 void add_thin_plate(BandSystem& sys, const Direction& du, const Direction& dv, double lambda) {
+  const SplineAxis au{du.degree, du.knots, false}, av{dv.degree, dv.knots, false};
+  const Eigen::MatrixXd u0 = derivative_gram(au, 0), u1 = derivative_gram(au, 1),
+                        u2 = derivative_gram(au, 2);
+  const Eigen::MatrixXd v0 = derivative_gram(av, 0), v1 = derivative_gram(av, 1),
+                        v2 = derivative_gram(av, 2);
   const int p = du.degree, q = dv.degree;
-  const std::vector<double> u0 = gram(du, 0), u1 = gram(du, 1), u2 = gram(du, 2);
-  const std::vector<double> v0 = gram(dv, 0), v1 = gram(dv, 1), v2 = gram(dv, 2);
-  const int wu = 2 * p + 1, wv = 2 * q + 1;
   for (int i = 0; i < sys.nu(); ++i)
-    for (int j = 0; j < sys.nv(); ++j)
-      for (int di = -p; di <= p; ++di)
-        for (int dj = -q; dj <= q; ++dj) {
-          const std::size_t gu = static_cast<std::size_t>(i) * wu + di + p;
-          const std::size_t gv = static_cast<std::size_t>(j) * wv + dj + q;
-          sys.at(i, j, di, dj) +=
-              lambda * (u2[gu] * v0[gv] + 2.0 * u1[gu] * v1[gv] + u0[gu] * v2[gv]);
-        }
+    for (int k = std::max(0, i - p); k <= std::min(sys.nu() - 1, i + p); ++k)
+      for (int j = 0; j < sys.nv(); ++j)
+        for (int l = std::max(0, j - q); l <= std::min(sys.nv() - 1, j + q); ++l)
+          sys.at(i, j, k - i, l - j) +=
+              lambda * (u2(i, k) * v0(j, l) + 2.0 * u1(i, k) * v1(j, l) + u0(i, k) * v2(j, l));
 }
 
 // The net with the fixed boundary rows/columns filled in (NaN elsewhere) and the fixed mask.

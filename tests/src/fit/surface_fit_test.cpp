@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include "src/error.h"
 #include "src/nurbs/point_inversion.h"
@@ -136,6 +137,28 @@ TEST(SurfaceFit, SmoothingMakesUnderdeterminedNetSolvable) {
   o.smoothing = 1e-6;
   const SurfaceFit f = fit_surface(s.points, s.u, s.v, o);
   EXPECT_LE(f.max_distance, 0.05);
+}
+
+// The thin-plate energy vanishes on an affine map c + u·e + v·f: any smoothing weight keeps it.
+TEST(SurfaceFit, SmoothingKeepsAnAffinePatch) {
+  const int n = 500;
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  Eigen::Matrix3Xd p(3, n);
+  Eigen::VectorXd u(n), v(n);
+  for (int k = 0; k < n; ++k) {
+    u[k] = U(rng);
+    v[k] = U(rng);
+    p.col(k) = Eigen::Vector3d(1, 2, 3) + u[k] * Eigen::Vector3d(10, 1, 2) +
+               v[k] * Eigen::Vector3d(-1, 8, 3);
+  }
+  SurfaceFitOptions o;
+  o.control_u = 7;
+  o.control_v = 5;
+  o.smoothing = 1e3;
+  EXPECT_LE(fit_surface(p, u, v, o).max_distance, 1e-10);
+  for (int k = 0; k < n; ++k) p(2, k) += 3 * u[k] * u[k];  // curved: now smoothing flattens it
+  EXPECT_GT(fit_surface(p, u, v, o).max_distance, 1e-2);
 }
 
 TEST(SurfaceFit, RejectsBadInput) {
