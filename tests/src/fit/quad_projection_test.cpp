@@ -158,6 +158,27 @@ TEST(QuadProjection, FullCylinderNeedsGrid3d) {
   RecordProperty("cylinder_approx_worst_rel", test::sci(worst_approx / diag));
 }
 
+// P5.3 through P6: a 250° patch folds over its max-area plane, so the plane search refuses it
+// (naming the folds), while a 180° patch is accepted and agrees with grid3d.
+TEST(QuadProjection, PlaneSearchRefuses250DegreesAndAccepts180) {
+  const NurbsSurface s250 = test::cylinder_patch(250.0, 10.0, 8.0, 12);
+  const Eigen::Matrix3Xd p250 = points_near(s250, 2000, 0, 0.01, 8);
+  const SurfaceBlanket b250 = test::uniform_blanket(s250, 60, 6);
+  EXPECT_THROW(parametrize_on_blanket(p250, s250, b250, {PatchSearch::plane, true, 2}), InputError);
+  const PatchParameters g250 = parametrize_on_blanket(p250, s250, b250);
+  EXPECT_LE(g250.distance.maxCoeff(), 0.01 + 1e-9);
+
+  const NurbsSurface s180 = test::cylinder_patch(180.0, 10.0, 8.0, 10);
+  const Eigen::Matrix3Xd p180 = points_near(s180, 2000, 0, 0.01, 9);
+  const SurfaceBlanket b180 = test::uniform_blanket(s180, 50, 6);
+  const PatchParameters plane =
+      parametrize_on_blanket(p180, s180, b180, {PatchSearch::plane, true, 2});
+  const PatchParameters grid = parametrize_on_blanket(p180, s180, b180);
+  EXPECT_EQ(plane.stats.folded_triangles, 0);
+  EXPECT_LE((plane.u - grid.u).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_LE((plane.v - grid.v).cwiseAbs().maxCoeff(), 1e-12);
+}
+
 TEST(QuadProjection, RejectsABadBlanket) {
   const NurbsSurface s = curved_patch();
   SurfaceBlanket b = test::uniform_blanket(s, 4, 4);
