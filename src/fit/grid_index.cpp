@@ -110,8 +110,9 @@ void GridIndex<Dim>::radius(const Point& q, double r, std::vector<int>& out) con
 // Piegl & Tiller's ring search: ring L holds the cells at Chebyshev cell distance L from q's cell;
 // every point outside rings 0..L is at least (wall distance of q in its cell) + L·size away.
 template <int Dim>
-void GridIndex<Dim>::nearest(const Point& q, int k, std::vector<int>& out) const {
+void GridIndex<Dim>::nearest(const Point& q, int k, std::vector<int>& out, int* rings) const {
   out.clear();
+  if (rings) *rings = 0;
   if (index_.empty() || k <= 0) return;
   using Entry = std::pair<double, int>;  // (squared distance, index): ties by index
   std::priority_queue<Entry> best;       // the k best so far, worst on top
@@ -149,6 +150,7 @@ void GridIndex<Dim>::nearest(const Point& q, int k, std::vector<int>& out) const
       while (d >= 0 && ++c[d] > hi[d]) c[d] = lo[d], --d;
       if (d < 0) break;
     }
+    if (rings) *rings = ring;
     const double bound = wall + ring * size_;
     if (static_cast<int>(best.size()) == k && best.top().first < bound * bound) break;
   }
@@ -160,9 +162,9 @@ void GridIndex<Dim>::nearest(const Point& q, int k, std::vector<int>& out) const
 }
 
 template <int Dim>
-int GridIndex<Dim>::nearest(const Point& q) const {
+int GridIndex<Dim>::nearest(const Point& q, int* rings) const {
   std::vector<int> out;
-  nearest(q, 1, out);
+  nearest(q, 1, out, rings);
   return out.empty() ? -1 : out[0];
 }
 

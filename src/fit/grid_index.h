@@ -41,10 +41,10 @@ class GridIndex {
   void radius(const Point& q, double r, std::vector<int>& out) const;
   // The k points nearest to q (fewer when there are fewer points), nearest first; ties broken by
   // the smaller index. P&T's ring search: stop when the k-th distance is below the wall distance
-  // of the rings not yet searched.
-  void nearest(const Point& q, int k, std::vector<int>& out) const;
+  // of the rings not yet searched. rings (optional) receives the last ring searched (0: q's cell).
+  void nearest(const Point& q, int k, std::vector<int>& out, int* rings = nullptr) const;
   // The index of the point nearest to q (-1 for an empty index).
-  int nearest(const Point& q) const;
+  int nearest(const Point& q, int* rings = nullptr) const;
 
  private:
   int linear(const std::array<int, Dim>& c) const;

@@ -14,6 +14,11 @@
 
 namespace polarform {
 
+// grid3d: quads binned by their 3D boxes, cell = median quad diagonal (the default; no
+// projectability needed). plane: the seed's 2D grid in the maximum-area plane, cell =
+// sqrt(x_L·y_L / vertices), refused on folds; it is searched point by point in rings like grid3d
+// (the seed loops over quads instead), which gives every point its nearest quad, also outside all
+// projected quads.
 enum class PatchSearch { grid3d, plane };
 
 struct PatchSearchOptions {

@@ -19,8 +19,10 @@ struct SurfaceFitOptions {
   // Control points per direction (> 0). With a fixed boundary 0 inherits the boundary curves'
   // counts (after degree elevation); without one 0 means 4 (or from the tolerance).
   int control_u = 0, control_v = 0;
-  // > 0: knots are inserted (in the spans of the worst points) until the max true distance of the
-  // points is <= tolerance or max_control_points per direction is reached.
+  // > 0: knots are inserted (the midpoints of the spans holding points beyond the tolerance, worst
+  // first, at most half the spans per step) until the max true distance of the points is <=
+  // tolerance, max_control_points per direction is reached, or a further step would leave control
+  // points without data (the last solvable net is kept; tolerance_met tells).
   double tolerance = 0.0;
   int max_control_points = 200;
   // Fix the first/last rows and columns to these curves: they are degree-elevated to the surface
