@@ -59,6 +59,7 @@ PatchJobResult run_patch_job(const std::filesystem::path& scan, const PatchJobOp
   } catch (const InputError& e) {
     throw InputError(scan.string() + ": " + e.what());
   }
+  if (o.interrogate) r.interrogation = interrogate_surfaces({r.patch.fit.surface}, *o.interrogate);
   r.total_seconds = seconds_since(t0);
   return r;
 }

@@ -10,6 +10,7 @@
 
 #include "designers/patch/boundary_input.h"
 #include "designers/patch/patch_fit.h"
+#include "jobs/interrogation/surface_interrogation.h"
 
 namespace polarform {
 
@@ -17,6 +18,7 @@ struct PatchJobOptions {
   std::optional<std::filesystem::path> boundary_file;  // --boundary
   std::optional<std::pair<int, int>> grid;             // --grid ROWS,COLS
   PatchFitOptions fit;
+  std::optional<CurvatureQuantity> interrogate;  // --interrogate: curvature maps, reflection lines
   bool skip_bad = false;
 };
 
@@ -27,6 +29,7 @@ struct PatchJobResult {
   std::size_t dropped = 0;
   FittedBoundary boundary;
   PatchFit patch;
+  std::optional<SurfaceInterrogation> interrogation;
   double read_seconds = 0.0, boundary_seconds = 0.0, total_seconds = 0.0;
   bool tolerance_met() const { return patch.fit.tolerance_met; }
 };

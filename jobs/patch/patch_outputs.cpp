@@ -155,6 +155,7 @@ json patch_report_json(const PatchJobResult& r, const std::vector<std::string>& 
                     {"fit", t.fit},
                     {"error", t.error},
                     {"total", r.total_seconds}};
+  if (r.interrogation) j["interrogation"] = surface_interrogation_json(*r.interrogation);
   j["files"] = files;
   return j;
 }
@@ -197,6 +198,8 @@ std::vector<std::string> write_patch_outputs(const PatchJobResult& r,
   for (const auto& [file, text] : content) files.push_back(file);
   files.insert(files.end(), {"deviation.ply", "report.html", "report.json"});
   if (p.thinning) files.push_back("thinned.ply");
+  if (r.interrogation)
+    for (const std::string& f : interrogation_file_names()) files.push_back(f);
   std::sort(files.begin(), files.end());
   content["report.html"] = html_report(r, decomposition_svg, preview_svg, files);
   content["report.json"] = report_json_text(patch_report_json(r, files));
@@ -215,6 +218,7 @@ std::vector<std::string> write_patch_outputs(const PatchJobResult& r,
   for (Eigen::Index k = 0; k < kept.cols(); ++k)  // outlives the transaction's writer
     kept.col(k) = r.points.col(p.thinning->kept[static_cast<std::size_t>(k)]);
   if (p.thinning) outputs.add("thinned.ply", ply_writer(dir / "thinned.ply", kept));
+  if (r.interrogation) add_interrogation_files(outputs, dir, *r.interrogation, title);
   outputs.commit();
   return files;
 }

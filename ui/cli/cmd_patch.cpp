@@ -11,6 +11,7 @@
 #include "src/number_text.h"
 #include "ui/cli/commands.h"
 #include "ui/cli/fit_arguments.h"
+#include "ui/cli/interrogate_option.h"
 #include "ui/cli/progress_bar.h"
 
 namespace polarform::cli {
@@ -21,7 +22,7 @@ struct PatchArgs {
   std::string scan, out, boundary, grid, base = "bilinear", base_share, base_ctrl, base_degree,
                                          cross_scale = "auto", decomposition_tol, split = "extent",
                                          search = "grid3d", polish = "yes", thin, degree = "3,3",
-                                         ctrl, tol, correct = "0", threads = "2";
+                                         ctrl, tol, correct = "0", threads = "2", interrogate;
   bool skip_bad = false, quiet = false;
 };
 
@@ -75,6 +76,7 @@ void run(const PatchArgs& a) {
   }
   f.correction_rounds = parse_int_pair("--correct", a.correct, 0, 100).first;
   f.threads = parse_int_pair("--threads", a.threads, 1, 256).first;
+  o.interrogate = interrogate_option(a.interrogate);
   o.skip_bad = a.skip_bad;
   ProgressBar bar("fitting ", !a.quiet);
   f.progress = std::ref(bar);
@@ -145,6 +147,7 @@ void add_patch_command(CLI::App& app) {
   cmd->add_option("--tol", args->tol, "refine the net until every fitted point is this near [mm]");
   cmd->add_option("--correct", args->correct,
                   "parameter-correction rounds (project, refit; the best kept; default 0)");
+  add_interrogate_option(*cmd, args->interrogate);
   cmd->add_option("--threads", args->threads, "worker threads (default 2)");
   cmd->add_flag("--skip-bad", args->skip_bad, "drop unreadable records instead of failing");
   cmd->add_flag("--quiet,-q", args->quiet, "no progress bar and no summary");
