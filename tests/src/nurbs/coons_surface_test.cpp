@@ -13,7 +13,7 @@
 #include "src/nurbs/knot_refinement.h"
 #include "src/nurbs/ruled_surface.h"
 #include "tests/src/nurbs/kernel_test_support.h"
-#include "tests/src/nurbs/patch_test_support.h"
+#include "tests/support/src/patch_test_support.h"
 
 namespace polarform {
 namespace {
