@@ -1,7 +1,7 @@
 // bilinear_coons and bicubic_coons (Piegl & Tiller 2001, §2.1–2.2; spec P1, P2 check 1): boundary
 // interpolation on 1001 samples per edge, reproduction of bilinear patches, ruled surfaces and
 // (with exact cross derivatives) bicubic patches, and the closed form of a bicubic Bezier patch's
-// bilinear-Coons interior control points.
+// bilinear-Coons interior control points; parameters recovered by projection (P1 check 4).
 #include "src/nurbs/coons_surface.h"
 
 #include <gmock/gmock.h>
@@ -11,6 +11,7 @@
 
 #include "src/error.h"
 #include "src/nurbs/knot_refinement.h"
+#include "src/nurbs/point_inversion.h"
 #include "src/nurbs/ruled_surface.h"
 #include "tests/src/nurbs/kernel_test_support.h"
 #include "tests/support/src/patch_test_support.h"
@@ -127,6 +128,23 @@ TEST(BilinearCoons, BicubicBezierInteriorClosedForm) {
     }
   RecordProperty("closed_form_error_rel", test::sci(worst / size));
   EXPECT_LE(worst, 1e-15 * size);
+}
+
+// Spec P1 check 4 (exact route): 10^4 points at known (u, v) on a Coons patch come back from
+// SurfaceProjector with their parameters.
+TEST(BilinearCoons, ParametersRecoveredByProjection) {
+  std::mt19937 rng(22);
+  const NurbsSurface S = bilinear_coons(test::surface_boundary(mixed_surface(rng)));
+  const SurfaceProjector projector(S);
+  std::uniform_real_distribution<double> t(0.0, 1.0);
+  double worst = 0.0;
+  for (int k = 0; k < 10000; ++k) {
+    const double u = t(rng), v = t(rng);
+    const SurfaceProjection p = projector.project(S.point(u, v));
+    worst = std::max({worst, std::abs(p.u - u), std::abs(p.v - v)});
+  }
+  RecordProperty("parameter_error", test::sci(worst));
+  EXPECT_LE(worst, 1e-9);
 }
 
 TEST(BilinearCoons, RefusesRationalBoundaries) {
