@@ -112,6 +112,32 @@ TEST(BicubicCoonsFit, BeatsBilinearOnALiftedInterior) {
   EXPECT_LT(bicubic, bilinear);
 }
 
+// A bump no Coons patch of the boundaries can represent: a 7 × 7 cubic net over a flat square with
+// its central 3 × 3 control points lifted (boundaries straight, cross derivatives zero at the
+// edges).
+TEST(BicubicCoonsFit, BeatsBilinearOnAnInteriorBump) {
+  NurbsSurface::Points P;
+  for (int i = 0; i < 7; ++i)
+    for (int j = 0; j < 7; ++j)
+      P.push_back(Vector3d(i * 10.0 / 6, j * 10.0 / 6,
+                           std::abs(i - 3) <= 1 && std::abs(j - 3) <= 1 ? 3.0 : 0.0));
+  const Knots U{0, 0, 0, 0, 0.25, 0.5, 0.75, 1, 1, 1, 1};
+  const NurbsSurface s(3, 3, U, U, P);
+  std::mt19937 rng(6);
+  const Samples all = sample(s, 10000, rng);
+  const PatchBoundary b = test::surface_boundary(s);
+  const Samples sub = head(all, 3000);
+  const double bilinear = max_distance(bilinear_coons(b), all);
+  const double bicubic = max_distance(fit_bicubic_coons(b, sub.points, sub.u, sub.v).surface, all);
+  const double scaled = max_distance(
+      fit_bicubic_coons(b, sub.points, sub.u, sub.v, {.scale_cross_derivatives = true}).surface,
+      all);
+  RecordProperty("bilinear_max", sci(bilinear));
+  RecordProperty("bicubic_max", sci(bicubic));
+  RecordProperty("bicubic_scaled_max", sci(scaled));
+  EXPECT_LT(bicubic, bilinear);
+}
+
 TEST(BicubicCoonsFit, RefusesTooFewPoints) {
   std::mt19937 rng(5);
   const NurbsSurface s = refined_random_patch(rng);
