@@ -1,8 +1,11 @@
 // Crack-free quadrilateral decomposition of a NURBS surface to a tolerance (Piegl & Tiller 2001,
 // §3.1; spec P4): parameter rectangles are split at their midpoints until every sub-patch's control
 // points lie within ε of the plane through its corners' centroid with normal d1 × d2 (d1, d2 the
-// corner diagonals); the blanket is the full tensor grid of all split values, so it has no
-// T-junctions.
+// corner diagonals; the LSQ plane of the net where d1 × d2 vanishes) and — beyond the seed, which
+// only bounds the distance along the normal — within ε of the bilinear patch of its corners at
+// their Greville parameters (the in-plane part: curved edges, collapsed corners); the blanket is
+// the full tensor grid of all split values, so it has no T-junctions, and a non-rational surface
+// lies within 2ε of the bilinear quads of the blanket.
 #pragma once
 
 #include <Eigen/Core>
