@@ -30,26 +30,6 @@ NurbsCurve3d lift_to_3d(const NurbsCurve2d& curve) {
   return NurbsCurve3d(BSpline(curve.degree(), curve.knots(), std::move(c3)));
 }
 
-namespace {
-
-// The reparametrization u -> front + back - u: reversed knots mirrored, reversed coefficients.
-BSpline reversed_spline(const BSpline& h) {
-  Knots k(h.knots().rbegin(), h.knots().rend());
-  const double sum = h.front() + h.back();
-  for (double& x : k) x = sum - x;
-  return BSpline(h.degree(), std::move(k), h.coefs().rowwise().reverse());
-}
-
-}  // namespace
-
-NurbsCurve3d reversed(const NurbsCurve3d& curve) {
-  return NurbsCurve3d(reversed_spline(curve.homogeneous()));
-}
-
-NurbsCurve2d reversed(const NurbsCurve2d& curve) {
-  return NurbsCurve2d(reversed_spline(curve.homogeneous()));
-}
-
 NurbsCurve3d translated(const NurbsCurve3d& curve, const Eigen::Vector3d& offset) {
   Eigen::MatrixXd c = curve.homogeneous().coefs();
   c.topRows<3>() += offset * c.row(3);

@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "src/nurbs/curve_reversal.h"
 #include "src/nurbs/nurbs_curve.h"
 #include "src/nurbs/nurbs_surface.h"
 
@@ -23,9 +24,6 @@ void require_exchangeable(int degree, const Knots& knots, std::string_view what)
 // The 2D curve as a 3D curve in the plane z = 0, with identical knots and weights.
 NurbsCurve3d lift_to_3d(const NurbsCurve2d& curve);
 
-// The same curve traversed backwards: knots u -> front + back - u, control points reversed.
-NurbsCurve3d reversed(const NurbsCurve3d& curve);
-NurbsCurve2d reversed(const NurbsCurve2d& curve);
 // The curve moved by offset.
 NurbsCurve3d translated(const NurbsCurve3d& curve, const Eigen::Vector3d& offset);
 

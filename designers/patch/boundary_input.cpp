@@ -15,15 +15,16 @@ namespace {
 Eigen::Vector3d first(const Eigen::Matrix3Xd& p) { return p.col(0); }
 Eigen::Vector3d last(const Eigen::Matrix3Xd& p) { return p.col(p.cols() - 1); }
 
-// Noise of a polyline from second differences: r_i = P_i − (P_{i−1} + P_{i+1})/2 has variance
-// 1.5 σ² per coordinate for independent errors of σ (curvature adds |P''|h²/8, negligible when
-// dense).
-double second_difference_noise(const Eigen::Matrix3Xd& p) {
-  if (p.cols() < 3) return 0.0;
+// Noise of a polyline from third differences: r_i = P_{i−1} − 3P_i + 3P_{i+1} − P_{i+2} has
+// variance 20 σ² per coordinate for independent errors of σ and is blind to a quadratic trend, so a
+// smooth curve sampled densely adds only |P‴|h³ (the second difference would add its curvature,
+// |P″|h²).
+double third_difference_noise(const Eigen::Matrix3Xd& p) {
+  if (p.cols() < 4) return 0.0;
   double sum = 0.0;
-  for (Eigen::Index i = 1; i + 1 < p.cols(); ++i)
-    sum += (p.col(i) - 0.5 * (p.col(i - 1) + p.col(i + 1))).squaredNorm();
-  return std::sqrt(sum / (static_cast<double>(p.cols() - 2) * 3 * 1.5));
+  for (Eigen::Index i = 1; i + 2 < p.cols(); ++i)
+    sum += (p.col(i - 1) - 3 * p.col(i) + 3 * p.col(i + 1) - p.col(i + 2)).squaredNorm();
+  return std::sqrt(sum / (static_cast<double>(p.cols() - 3) * 3 * 20));
 }
 
 }  // namespace
@@ -88,7 +89,7 @@ FittedBoundary fit_boundary_polylines(const std::array<Eigen::Matrix3Xd, 4>& pol
     o.degree = std::clamp(static_cast<int>(p.cols()) - 1, 1, options.degree);
     o.start = 0.5 * (first(p) + last(best[(k + 3) % 4]));
     o.end = 0.5 * (last(p) + first(best[(k + 1) % 4]));
-    out.noise[k] = second_difference_noise(p);
+    out.noise[k] = third_difference_noise(p);
     o.tolerance = std::max(out.tolerance, 4.0 * out.noise[k]);
     o.max_control_points = std::max(o.degree + 1, static_cast<int>(p.cols()) / 4);
     const CurveFit<3> fit = fit_curve<3>(p, o);

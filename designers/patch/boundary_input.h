@@ -16,7 +16,7 @@ namespace polarform {
 struct BoundaryFitOptions {
   int degree = 3;
   // The max distance of a polyline's points to its curve; the fit stops earlier at the noise
-  // floor: max(tolerance, 4·σ̂) with σ̂ the polyline's second-difference noise estimate, and at one
+  // floor: max(tolerance, 4·σ̂) with σ̂ the polyline's third-difference noise estimate, and at one
   // control point per 4 points.
   double tolerance = 0.0;  // <= 0: 1e-5 of the boundary's size
   // Ends of consecutive polylines farther apart than this are refused (<= 0: 1 % of the size).

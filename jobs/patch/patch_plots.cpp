@@ -1,5 +1,6 @@
 #include "jobs/patch/patch_plots.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <string>

@@ -119,6 +119,7 @@ BaseSurface build_base_surface(const PatchBoundary& boundary, const Eigen::Matri
   }
   // Bicubic Coons: the unscaled and/or the scaled derivatives, the nearer one kept.
   BaseSurface best;
+  bool have = false;
   for (const bool scaled : {false, true}) {
     if ((o.cross_scale == CrossScale::yes && !scaled) ||
         (o.cross_scale == CrossScale::no && scaled))
@@ -132,7 +133,10 @@ BaseSurface build_base_surface(const PatchBoundary& boundary, const Eigen::Matri
     c.twist_mismatch = fit.twist_mismatch;
     measure(c, points, u, v, o.threads);
     (scaled ? b.scaled_max_distance : b.unscaled_max_distance) = c.max_distance;
-    if (best.surface.size_u() == 0 || c.max_distance < best.max_distance) best = std::move(c);
+    if (!have || c.max_distance < best.max_distance) {
+      best = std::move(c);
+      have = true;
+    }
   }
   best.scaled_max_distance = b.scaled_max_distance;
   best.unscaled_max_distance = b.unscaled_max_distance;

@@ -384,18 +384,30 @@ SurfaceFit fit_surface(const Eigen::Matrix3Xd& points, const Eigen::VectorXd& u,
   fit.rounds.push_back({proj.max, proj.rms});
   NurbsSurface best_surface = surface;
   Projection best = proj;
-  // Hoschek correction: refit at the foot-point parameters; stop below a 1 % gain, keep the best.
+  // Hoschek correction, over-relaxed: the next parameters are t + ω·(foot − t) with ω = 2 (plain
+  // correction, ω = 1, gains ~8 % a round on doubly curved patches: the fit follows its own
+  // parametrization); a round worse than the best restarts from the best with ω halved (down to
+  // 1), and rounds end when plain correction gains less than 1 %. The best round is kept.
+  Eigen::VectorXd tu = u, tv = v;  // the parameters the kept surface was fitted at
+  double omega = 2.0;
   for (int r = 1; r <= o.correction_rounds; ++r) {
-    const double previous = proj.max;
-    surface = solve_net(points, proj.u, proj.v, du, dv, o.smoothing, o.threads);
-    proj = project_points(surface, points, proj.u, proj.v, o.threads);
+    const Eigen::VectorXd nu_ = (tu + omega * (best.u - tu)).cwiseMax(0.0).cwiseMin(1.0);
+    const Eigen::VectorXd nv_ = (tv + omega * (best.v - tv)).cwiseMax(0.0).cwiseMin(1.0);
+    surface = solve_net(points, nu_, nv_, du, dv, o.smoothing, o.threads);
+    proj = project_points(surface, points, best.u, best.v, o.threads);
     fit.rounds.push_back({proj.max, proj.rms});
     if (proj.max < best.max) {
+      const bool small_gain = !(proj.max < 0.99 * best.max);
       best = proj;
       best_surface = surface;
       fit.best_round = r;
+      tu = nu_;
+      tv = nv_;
+      if (small_gain && omega == 1.0) break;
+    } else {
+      if (omega == 1.0) break;
+      omega = std::max(1.0, omega / 2);
     }
-    if (!(proj.max < 0.99 * previous)) break;
   }
   fit.surface = std::move(best_surface);
   fit.u = std::move(best.u);

@@ -29,8 +29,8 @@ struct SurfaceFitOptions {
   // degree and refined so that U holds the union of u0's and u1's knots (likewise V); rational
   // curves are refused.
   std::optional<PatchBoundary> boundary;
-  // Parameter correction rounds after the first fit (0: none); rounds stop early when the max
-  // distance improves by less than 1 %.
+  // Parameter correction rounds after the first fit (0: none), over-relaxed (surface_fit.cpp);
+  // rounds stop early when plain correction improves the max distance by less than 1 %.
   int correction_rounds = 0;
   // Weight of the thin-plate energy ∫∫ |S_uu|² + 2|S_uv|² + |S_vv|² added to the normal equations
   // (0: pure least squares); keeps an under-determined net well posed.

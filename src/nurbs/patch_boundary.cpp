@@ -35,14 +35,6 @@ NurbsCurve3d with_end(const NurbsCurve3d& c, bool at_start, const Eigen::Vector3
 }  // namespace
 
 // NURBS Book §6.1 (reversal): knots t_i -> a + b − t_{m−i}, control points in reverse order.
-NurbsCurve3d reversed(const NurbsCurve3d& c) {
-  const Knots& U = c.knots();
-  Knots R(U.size());
-  const double a = c.front(), b = c.back();
-  for (std::size_t i = 0; i < U.size(); ++i) R[i] = a + b - U[U.size() - 1 - i];
-  return NurbsCurve3d(
-      BSpline(c.degree(), std::move(R), c.homogeneous().coefs().rowwise().reverse()));
-}
 
 // Piegl & Tiller 2001, §2: the loop c0 (v = 0), c1 (u = 1), c2 (v = 1, backwards), c3 (u = 0,
 // backwards).

@@ -5,6 +5,7 @@
 
 #include <array>
 
+#include "src/nurbs/curve_reversal.h"
 #include "src/nurbs/nurbs_curve.h"
 
 namespace polarform {
@@ -21,8 +22,5 @@ struct PatchBoundary {
 // curve ends meeting there. Throws InputError naming the corner (0..3, where c_k starts) and its gap
 // when the ends do not meet, or for a rational curve.
 PatchBoundary boundary_from_loop(const std::array<NurbsCurve3d, 4>& loop, double corner_tolerance);
-
-// The curve run backwards on the same domain: C(a + b − t).
-NurbsCurve3d reversed(const NurbsCurve3d& c);
 
 }  // namespace polarform

@@ -105,7 +105,8 @@ TEST(SurfaceFit, NeverReturnsWorseThanRoundZero) {
   const SurfaceFit f = fit_surface(s.points, s.u, s.v, o);
   EXPECT_LE(f.max_distance, f.rounds[0].max_distance);
   EXPECT_LE(f.max_distance, 1e-10);
-  EXPECT_LE(f.rounds.size(), 2u);  // no 1 % gain: stop after one round
+  // An over-relaxed round (ω = 2) and a plain one, neither gaining 1 %: stop.
+  EXPECT_LE(f.rounds.size(), 3u);
 }
 
 // Tolerance mode: a surface that needs more than a 4×4 net gets knots until it meets the tolerance.

@@ -49,12 +49,12 @@ TEST(PatchCli, FitsAScanIntoABundle) {
 TEST(PatchCli, AnUnmetToleranceExitsOneWithTheBundleWritten) {
   const ScratchDir dir("patch_cli_tol");
   write_inputs(dir);
-  const CliRun run = run_cli({"patch", (dir / "scan.xyz").string(), "--boundary",
-                              (dir / "boundary.csv").string(), "--out", (dir / "out").string(),
-                              "--tol", "1e-13", "-q"},
-                             dir);
+  const CliRun run =
+      run_cli({"patch", (dir / "scan.xyz").string(), "--boundary", (dir / "boundary.csv").string(),
+               "--out", (dir / "out").string(), "--tol", "1e-15", "-q"},
+              dir);
   EXPECT_EQ(run.status, 1) << run.err;
-  EXPECT_NE(run.err.find("--tol 1e-13 mm not met"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("--tol 1e-15 mm not met"), std::string::npos) << run.err;
   EXPECT_TRUE(fs::exists(dir / "out" / "report.json"));
 }
 
