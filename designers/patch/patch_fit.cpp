@@ -58,7 +58,8 @@ PatchFit fit_patch(const Eigen::Matrix3Xd& points, const PatchBoundary& boundary
   // P2–P3: a better base, fitted on a share at the bilinear parameters, parametrises them again.
   BaseSurfaceOptions base = o.base;
   base.threads = o.threads;
-  r.base = build_base_surface(boundary, points, r.parameters.u, r.parameters.v, base);
+  r.base = build_base_surface(boundary, points, r.parameters.u, r.parameters.v,
+                              r.parameters.distance, base);
   r.timings_s.base += seconds(t);
   if (base.kind != BaseKind::bilinear) {
     r.decomposition = decompose_surface(r.base.surface, o.decomposition);
@@ -90,26 +91,30 @@ PatchFit fit_patch(const Eigen::Matrix3Xd& points, const PatchBoundary& boundary
                                      entries(r.parameters.v, kept), f);
   r.timings_s.fit += seconds(t);
   progress.sub(0.5, 0.9)(1.0);
-  // Every point's true distance to the final surface, by Newton from its base parameters (the
-  // fitted points from their final parameters), signed by the surface normal.
-  r.u = r.parameters.u;
-  r.v = r.parameters.v;
+  // Every point's true distance to the final surface: the fit measured its points at their feet;
+  // the points thinned out are projected by Newton from their base parameters. Signed by S_u × S_v.
+  Eigen::VectorXd d;
   if (kept.empty()) {
     r.u = r.fit.u;
     r.v = r.fit.v;
+    d = r.fit.distances;
   } else {
+    r.u = r.parameters.u;
+    r.v = r.parameters.v;
     for (std::size_t k = 0; k < kept.size(); ++k) {
       r.u[kept[k]] = r.fit.u[static_cast<Eigen::Index>(k)];
       r.v[kept[k]] = r.fit.v[static_cast<Eigen::Index>(k)];
     }
+    d = distances_from_parameters(r.fit.surface, points, r.u, r.v, o.threads);
   }
-  const Eigen::VectorXd d = distances_from_parameters(r.fit.surface, points, r.u, r.v, o.threads);
   r.distances.resize(d.size());
-  for (Eigen::Index k = 0; k < d.size(); ++k) {
-    const Eigen::Vector3d n = r.fit.surface.normal(r.u[k], r.v[k]);
-    const Eigen::Vector3d off = points.col(k) - r.fit.surface.point(r.u[k], r.v[k]);
-    r.distances[k] = off.dot(n) < 0 ? -d[k] : d[k];
-  }
+  const auto n = static_cast<std::size_t>(d.size());
+  parallel_chunks(n, worker_count(o.threads, n, 5000), [&](std::size_t b, std::size_t e, int) {
+    for (auto k = static_cast<Eigen::Index>(b); k < static_cast<Eigen::Index>(e); ++k) {
+      const Eigen::Vector3d off = points.col(k) - r.fit.surface.point(r.u[k], r.v[k]);
+      r.distances[k] = off.dot(r.fit.surface.normal(r.u[k], r.v[k])) < 0 ? -d[k] : d[k];
+    }
+  });
   r.error = error_stats(r.distances);
   r.timings_s.error += seconds(t);
   progress(1.0);

@@ -87,7 +87,7 @@ Eigen::VectorXd distances_from_parameters(const NurbsSurface& surface,
 
 BaseSurface build_base_surface(const PatchBoundary& boundary, const Eigen::Matrix3Xd& points,
                                const Eigen::VectorXd& u, const Eigen::VectorXd& v,
-                               const BaseSurfaceOptions& o) {
+                               const Eigen::VectorXd& distances, const BaseSurfaceOptions& o) {
   if (!(o.share > 0 && o.share <= 1))
     throw InputError("base share " + std::to_string(o.share) + ": expected a fraction in (0, 1]");
   BaseSurface b;
@@ -95,7 +95,14 @@ BaseSurface build_base_surface(const PatchBoundary& boundary, const Eigen::Matri
   const int n = static_cast<int>(points.cols());
   if (o.kind == BaseKind::bilinear) {
     b.surface = bilinear_coons(boundary);
-    measure(b, points, u, v, o.threads);
+    b.u = u;
+    b.v = v;
+    b.distances = distances;
+    b.max_distance = distances.size() ? distances.maxCoeff() : 0.0;
+    b.rms_distance =
+        distances.size()
+            ? std::sqrt(distances.squaredNorm() / static_cast<double>(distances.size()))
+            : 0.0;
     return b;
   }
   const std::vector<int> share = random_share(n, o.share, std::min(n, 64));

@@ -40,12 +40,13 @@ struct BaseSurface {
 
 std::string base_kind_name(BaseKind kind);
 
-// The points with parameters (u, v) on the bilinear Coons patch of `boundary` (e.g. from
-// parametrize_on_blanket). The share is drawn with a fixed seed: the same input gives the same
-// base.
+// The points with their feet (u, v) on the bilinear Coons patch of `boundary` and their distances
+// there (from parametrize_on_blanket with the polish): the bilinear base is that patch with these
+// numbers; the others are fitted on a share drawn with a fixed seed (the same input gives the same
+// base) and measured by Newton from (u, v).
 BaseSurface build_base_surface(const PatchBoundary& boundary, const Eigen::Matrix3Xd& points,
                                const Eigen::VectorXd& u, const Eigen::VectorXd& v,
-                               const BaseSurfaceOptions& options);
+                               const Eigen::VectorXd& distances, const BaseSurfaceOptions& options);
 
 // The true distances of the points to `surface` by Newton from (u, v), in parallel: the feet are
 // written back into u and v.
