@@ -86,9 +86,17 @@ PatchFit fit_patch(const Eigen::Matrix3Xd& points, const PatchBoundary& boundary
   f.boundary = boundary;
   f.correction_rounds = o.correction_rounds;
   f.threads = o.threads;
-  r.fit = kept.empty() ? fit_surface(points, r.parameters.u, r.parameters.v, f)
-                       : fit_surface(columns(points, kept), entries(r.parameters.u, kept),
-                                     entries(r.parameters.v, kept), f);
+  const Eigen::Matrix3Xd fitted = kept.empty() ? Eigen::Matrix3Xd() : columns(points, kept);
+  const Eigen::Matrix3Xd& q = kept.empty() ? points : fitted;
+  const Eigen::VectorXd qu = kept.empty() ? r.parameters.u : entries(r.parameters.u, kept);
+  const Eigen::VectorXd qv = kept.empty() ? r.parameters.v : entries(r.parameters.v, kept);
+  if (o.control_u == 0 && o.control_v == 0 && !(o.tolerance > 0)) {
+    r.net = select_surface_net(q, qu, qv, f);
+    f.control_u = r.net->control_u;
+    f.control_v = r.net->control_v;
+    r.timings_s.net += seconds(t);
+  }
+  r.fit = fit_surface(q, qu, qv, f);
   r.timings_s.fit += seconds(t);
   progress.sub(0.5, 0.9)(1.0);
   // Every point's true distance to the final surface: the fit measured its points at their feet;

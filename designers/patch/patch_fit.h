@@ -16,6 +16,7 @@
 #include "src/fit/parallel.h"
 #include "src/fit/quad_projection.h"
 #include "src/fit/surface_fit.h"
+#include "src/fit/surface_net_selection.h"
 #include "src/fit/thinning.h"
 #include "src/nurbs/surface_decomposition.h"
 
@@ -35,7 +36,8 @@ struct PatchFitOptions {
 };
 
 struct PatchStageTimes {
-  double base = 0.0, decomposition = 0.0, search = 0.0, thinning = 0.0, fit = 0.0, error = 0.0;
+  double base = 0.0, decomposition = 0.0, search = 0.0, thinning = 0.0, net = 0.0, fit = 0.0,
+         error = 0.0;
 };
 
 struct PatchFit {
@@ -45,6 +47,7 @@ struct PatchFit {
   MaxAreaPlane plane;                  // of the base's blanket (for the report and plane search)
   PatchParameters parameters;          // every point on the base
   std::optional<Thinning> thinning;
+  std::optional<SurfaceNetSelection> net;  // when the data chose the net
   SurfaceFit fit;             // on the kept points
   Eigen::VectorXd u, v;       // every point's foot on the final surface
   Eigen::VectorXd distances;  // signed true distances (positive along S_u × S_v)

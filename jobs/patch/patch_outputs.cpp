@@ -134,6 +134,23 @@ json patch_report_json(const PatchJobResult& r, const std::vector<std::string>& 
   json rounds = json::array();
   for (const SurfaceFitRound& k : p.fit.rounds)
     rounds.push_back({{"max_mm", k.max_distance}, {"rms_mm", k.rms_distance}});
+  if (p.net) {
+    json candidates = json::array();
+    for (const SurfaceNetCandidate& c : p.net->candidates)
+      candidates.push_back({{"control_net", json::array({c.control_u, c.control_v})},
+                            {"free_points", c.free_points},
+                            {"rms_mm", c.rms},
+                            {"gcv", c.gcv}});
+    j["net_selection"] = {{"rule",
+                           "GCV over nets grown from the boundary's; at most one free control "
+                           "point per 4 points"},
+                          {"samples", p.net->samples},
+                          {"chosen", json::array({p.net->control_u, p.net->control_v})},
+                          {"noise_mm", p.net->noise},
+                          {"noise_reached", p.net->noise_reached},
+                          {"stop", p.net->stop},
+                          {"candidates", candidates}};
+  }
   j["fit"] = {{"degrees", degrees(p.fit.surface)},       {"control_net", net(p.fit.surface)},
               {"fitted_points", p.fit.distances.size()}, {"rounds", rounds},
               {"best_round", p.fit.best_round},          {"tolerance_met", p.fit.tolerance_met}};

@@ -345,6 +345,18 @@ void check_input(const Eigen::Matrix3Xd& points, const Eigen::VectorXd& u, const
 
 }  // namespace
 
+NurbsSurface least_squares_surface(const Eigen::Matrix3Xd& points, const Eigen::VectorXd& u,
+                                   const Eigen::VectorXd& v, const SurfaceFitOptions& o) {
+  check_input(points, u, v, o);
+  std::optional<BoundaryPair> bu, bv;
+  if (o.boundary) {
+    bu = boundary_pair(o.boundary->u0, o.boundary->u1, o.degree_u, "u0", "u1");
+    bv = boundary_pair(o.boundary->v0, o.boundary->v1, o.degree_v, "v0", "v1");
+  }
+  return solve_net(points, u, v, make_direction(o.degree_u, o.control_u, bu, "u"),
+                   make_direction(o.degree_v, o.control_v, bv, "v"), o.smoothing, o.threads);
+}
+
 // Piegl & Tiller 2001, §2.3 and §4 (fixed-boundary LSQ, parameter correction); spec B2.
 SurfaceFit fit_surface(const Eigen::Matrix3Xd& points, const Eigen::VectorXd& u,
                        const Eigen::VectorXd& v, const SurfaceFitOptions& options) {

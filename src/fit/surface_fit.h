@@ -52,6 +52,11 @@ struct SurfaceFit {
   bool tolerance_met = true;    // max_distance <= tolerance (true without a tolerance)
 };
 
+// One least-squares solve at the given parameters with the options' net, degrees, boundary and
+// smoothing (no tolerance loop, no correction, nothing measured): what fit_surface starts from.
+NurbsSurface least_squares_surface(const Eigen::Matrix3Xd& points, const Eigen::VectorXd& u,
+                                   const Eigen::VectorXd& v, const SurfaceFitOptions& options);
+
 // points (3 × N), parameters u, v in [0, 1]. Throws InputError for mismatched sizes, parameters
 // outside [0, 1], bad degrees/counts, or fewer points than free control points without smoothing.
 SurfaceFit fit_surface(const Eigen::Matrix3Xd& points, const Eigen::VectorXd& u,

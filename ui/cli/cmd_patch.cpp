@@ -143,7 +143,8 @@ void add_patch_command(CLI::App& app) {
   cmd->add_option("--thin", args->thin,
                   "thin the points by the base's geometry at this percent of its diagonal");
   cmd->add_option("--degree", args->degree, "p,q: degrees of the fitted surface (default 3,3)");
-  cmd->add_option("--ctrl", args->ctrl, "n,m: control net (default: the boundary curves')");
+  cmd->add_option("--ctrl", args->ctrl,
+                  "n,m: control net (default: chosen by GCV, grown from the boundary's)");
   cmd->add_option("--tol", args->tol, "refine the net until every fitted point is this near [mm]");
   cmd->add_option("--correct", args->correct,
                   "parameter-correction rounds (project, refit; the best kept; default 0)");

@@ -73,6 +73,27 @@ TEST(PatchFit, WithNoiseTheTruthToFitRmsIsBelowTheNoise) {
   EXPECT_NEAR(r.error.rms, sigma, 0.1 * sigma);  // the residual is the noise
 }
 
+TEST(PatchFit, TheDataChooseTheNetOfNoisyModelPatches) {
+  // Gently and strongly curved 8 × 8 patches, moved rigidly, with noise σ and their exact
+  // boundaries: the net grows from the boundary's until GCV stops improving; the surface stays
+  // within the noise of the truth.
+  for (const double bend : {0.0, 1.5}) {
+    const NurbsSurface truth = patch_test::wavy_patch(bend);
+    const double sigma = 1e-3 * diagonal(truth);
+    const auto sample = sample_patch(truth, 20000, sigma, 11);
+    PatchFitOptions o;
+    o.correction_rounds = 3;
+    const PatchFit r = fit_patch(sample.points, patch_test::net_boundary(truth), o);
+    ASSERT_TRUE(r.net.has_value());
+    EXPECT_GT(r.net->candidates.size(), 1u);
+    const auto [rms, max] = truth_to_fit(truth, r.fit.surface);
+    EXPECT_LE(rms, sigma) << "bend " << bend << ": net " << r.net->control_u << " × "
+                          << r.net->control_v << ", " << r.net->stop;
+    EXPECT_LE(max, 5 * sigma) << "bend " << bend;
+    EXPECT_NEAR(r.net->noise, sigma, 0.2 * sigma);  // the residual is the noise
+  }
+}
+
 TEST(PatchFit, TheS8SetWithinAThousandthOfTheDiagonal) {
   // Bilinear Coons base for (a)–(c), the tensor-product base for (d) and (e), where the bilinear
   // patch misses the interior; 5 correction rounds; the 4 × 4 bicubic net can represent each.

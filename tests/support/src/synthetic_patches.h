@@ -5,6 +5,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -93,6 +94,43 @@ inline std::array<Eigen::Matrix3Xd, 4> boundary_polylines(const NurbsSurface& s,
     out[3].col(k) = s.point(0, 1 - t);
   }
   return out;
+}
+
+// A gently or strongly curved 8 × 8 bicubic patch on uniform knots over about 10 × 10 mm (the
+// kind a NURBS model's faces are): a wavy height field, turned by `bend` radians about the v
+// direction (0: gentle), rotated and moved rigidly.
+inline NurbsSurface wavy_patch(double bend) {
+  const Knots U{0, 0, 0, 0, 0.2, 0.4, 0.6, 0.8, 1, 1, 1, 1};
+  NurbsSurface::Points p;
+  const Eigen::Matrix3d turn =
+      (Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 3).normalized())).toRotationMatrix();
+  for (int i = 0; i < 8; ++i)
+    for (int j = 0; j < 8; ++j) {
+      const double x = 10.0 * i / 7, y = 10.0 * j / 7;
+      const double z = 0.8 * std::sin(0.9 * x) * std::cos(0.6 * y) + 0.05 * x * y;
+      const double a = bend * (x - 5) / 10;  // bent about an axis along y
+      const double r = 10.0 / std::max(bend, 1e-9);
+      const Eigen::Vector3d q =
+          bend > 0 ? Eigen::Vector3d((r + z) * std::sin(a), y, (r + z) * std::cos(a) - r)
+                   : Eigen::Vector3d(x, y, z);
+      p.push_back(turn * q + Eigen::Vector3d(3, -7, 11));
+    }
+  return NurbsSurface(3, 3, U, U, p);
+}
+
+// The boundary of a clamped non-rational surface: its first and last rows and columns of control
+// points on its knots, domains mapped to [0, 1].
+inline PatchBoundary net_boundary(const NurbsSurface& s) {
+  const auto curve = [&](bool along_u, int fixed) {
+    NurbsCurve3d::Points q;
+    const int n = along_u ? s.size_u() : s.size_v();
+    for (int k = 0; k < n; ++k)
+      q.push_back(along_u ? s.control_point(k, fixed) : s.control_point(fixed, k));
+    return NurbsCurve3d(along_u ? s.degree_u() : s.degree_v(), along_u ? s.knots_u() : s.knots_v(),
+                        q);
+  };
+  return PatchBoundary{curve(true, 0), curve(true, s.size_v() - 1), curve(false, 0),
+                       curve(false, s.size_u() - 1)};
 }
 
 struct PatchSample {
