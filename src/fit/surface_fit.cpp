@@ -398,8 +398,9 @@ SurfaceFit fit_surface(const Eigen::Matrix3Xd& points, const Eigen::VectorXd& u,
   Projection best = proj;
   // Hoschek correction, over-relaxed: the next parameters are t + ω·(foot − t) with ω = 2 (plain
   // correction, ω = 1, gains ~8 % a round on doubly curved patches: the fit follows its own
-  // parametrization); a round worse than the best restarts from the best with ω halved (down to
-  // 1), and rounds end when plain correction gains less than 1 %. The best round is kept.
+  // parametrization); a round worse than the best by more than 1 % restarts from the best with ω
+  // halved (down to 1); rounds end when plain correction gains less than 1 % or a round changes
+  // nothing by 1 % either way. The best round is kept.
   Eigen::VectorXd tu = u, tv = v;  // the parameters the kept surface was fitted at
   double omega = 2.0;
   for (int r = 1; r <= o.correction_rounds; ++r) {
@@ -417,7 +418,8 @@ SurfaceFit fit_surface(const Eigen::Matrix3Xd& points, const Eigen::VectorXd& u,
       tv = nv_;
       if (small_gain && omega == 1.0) break;
     } else {
-      if (omega == 1.0) break;
+      // No better, and not worse by 1 % either: the parameters have converged (noise floor).
+      if (omega == 1.0 || proj.max <= 1.01 * best.max) break;
       omega = std::max(1.0, omega / 2);
     }
   }
