@@ -91,6 +91,10 @@ void run(const PatchArgs& a) {
                 base_kind_name(p.base.kind).c_str(), p.base.surface.size_u(),
                 p.base.surface.size_v(), p.base.max_distance, p.decomposition.blanket.quads(),
                 p.parameters.stats.clamped_points);
+    if (p.net)
+      std::printf("net %d x %d chosen by GCV from %zu candidates: %s; noise %.4g mm\n",
+                  p.net->control_u, p.net->control_v, p.net->candidates.size(),
+                  p.net->stop.c_str(), p.net->noise);
     std::printf(
         "surface %d x %d, degree (%d, %d); distance of all points rms %.4g, p95 %.4g, max "
         "%.4g mm\n",
