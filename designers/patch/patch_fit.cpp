@@ -5,6 +5,7 @@
 #include <string>
 
 #include "src/error.h"
+#include "src/number_text.h"
 #include "src/nurbs/coons_surface.h"
 
 namespace polarform {
@@ -86,17 +87,28 @@ PatchFit fit_patch(const Eigen::Matrix3Xd& points, const PatchBoundary& boundary
   f.boundary = boundary;
   f.correction_rounds = o.correction_rounds;
   f.threads = o.threads;
+  // A thinned set leaves some control points without data: a trace of thin-plate energy keeps
+  // the system well posed without pulling on the points (as the tensor base does).
+  if (o.thin > 0) f.smoothing = 1e-9;
   const Eigen::Matrix3Xd fitted = kept.empty() ? Eigen::Matrix3Xd() : columns(points, kept);
   const Eigen::Matrix3Xd& q = kept.empty() ? points : fitted;
   const Eigen::VectorXd qu = kept.empty() ? r.parameters.u : entries(r.parameters.u, kept);
   const Eigen::VectorXd qv = kept.empty() ? r.parameters.v : entries(r.parameters.v, kept);
-  if (o.control_u == 0 && o.control_v == 0 && !(o.tolerance > 0)) {
-    r.net = select_surface_net(q, qu, qv, f);
-    f.control_u = r.net->control_u;
-    f.control_v = r.net->control_v;
-    r.timings_s.net += seconds(t);
+  try {
+    if (o.control_u == 0 && o.control_v == 0 && !(o.tolerance > 0)) {
+      r.net = select_surface_net(q, qu, qv, f);
+      f.control_u = r.net->control_u;
+      f.control_v = r.net->control_v;
+      r.timings_s.net += seconds(t);
+    }
+    r.fit = fit_surface(q, qu, qv, f);
+  } catch (const InputError& e) {
+    if (!r.thinning) throw;
+    throw InputError("thinning at " + number_text(o.thin * 100) + " % kept " +
+                     std::to_string(kept.size()) + " of " + std::to_string(points.cols()) +
+                     " points, too few for the surface: " + e.what() +
+                     " (thin at a smaller percentage, or give a coarser boundary with --tol)");
   }
-  r.fit = fit_surface(q, qu, qv, f);
   r.timings_s.fit += seconds(t);
   progress.sub(0.5, 0.9)(1.0);
   // Every point's true distance to the final surface: the fit measured its points at their feet;

@@ -31,7 +31,8 @@ Figure patch_decomposition_figure(const PatchJobResult& r) {
   domain.title = "parameter lines U × V";
   domain.x_label = "u";
   domain.y_label = "v";
-  domain.equal_aspect = true;
+  domain.x_range = AxisRange{0, 1};
+  domain.y_range = AxisRange{0, 1};
   Series lines{"", {}, {}, Series::Style::line, "#14c"};
   for (const double u : b.u) {
     lines.x.insert(lines.x.end(), {u, u, NAN});
@@ -48,6 +49,14 @@ Figure patch_decomposition_figure(const PatchJobResult& r) {
   plane.y_label = "e2 [mm]";
   plane.equal_aspect = true;
   const auto [e1, e2] = plane_axes(r.patch.plane.normal);
+  // The points under the edges, at most about 3000 of them, so the blanket stays visible.
+  Series pts{"points", {}, {}, Series::Style::markers, "#e80"};
+  const Eigen::Index stride = std::max<Eigen::Index>(1, r.points.cols() / 3000);
+  for (Eigen::Index k = 0; k < r.points.cols(); k += stride) {
+    pts.x.push_back(r.points.col(k).dot(e1));
+    pts.y.push_back(r.points.col(k).dot(e2));
+  }
+  plane.add(pts);
   Series quads{"quad edges", {}, {}, Series::Style::line, "#14c"};
   const int nu = static_cast<int>(b.u.size()), nv = static_cast<int>(b.v.size());
   const auto add_polyline = [&](auto vertex_of, int count) {
@@ -62,12 +71,6 @@ Figure patch_decomposition_figure(const PatchJobResult& r) {
   for (int a = 0; a < nu; ++a) add_polyline([&](int k) { return b.vertex(a, k); }, nv);
   for (int c = 0; c < nv; ++c) add_polyline([&](int k) { return b.vertex(k, c); }, nu);
   plane.add(quads);
-  Series pts{"points", {}, {}, Series::Style::markers, "#e80"};
-  for (Eigen::Index k = 0; k < r.points.cols(); k += figure_stride(r.points.cols())) {
-    pts.x.push_back(r.points.col(k).dot(e1));
-    pts.y.push_back(r.points.col(k).dot(e2));
-  }
-  plane.add(pts);
   return f;
 }
 
