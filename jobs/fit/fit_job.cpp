@@ -187,6 +187,11 @@ FitJobResult fit_cloud(FitInput in, const FitJobOptions& o) {
   // Automatic on a planar cloud: a given axis is the profile plane's normal.
   if (polar && o.method == FitJobMethod::automatic && o.axis)
     plane = naming_input(in.file.string(), [&] { return fit_plane(in.points, o.axis); });
+  if (o.interrogate && polar)
+    throw InputError(
+        "--interrogate: a profile has no surface to interrogate (its curvature is in "
+        "curvature.svg); this cloud is " +
+        plane_text(plane));
   if (o.fairing && !polar)
     throw InputError("--fair: fairing is implemented for profiles (polar fits); this cloud is " +
                      plane_text(plane) + ", fitted as a surface");
@@ -214,19 +219,28 @@ FitJobResult fit_cloud(FitInput in, const FitJobOptions& o) {
   FitReport& rep = report_of(fit);
   rep.times.read = in.read_seconds;
   rep.times.total += in.read_seconds;
-  return {std::move(in.file),
-          std::move(in.points),
-          in.dropped,
-          std::move(method),
-          std::move(reason),
-          std::move(plane),
-          std::move(fit),
-          o.fairness,
-          o.fairness_weight,
-          o.base,
-          o.reject_outliers,
-          std::move(warnings),
-          in.read_seconds + clock.lap()};
+  FitJobResult result{std::move(in.file),
+                      std::move(in.points),
+                      in.dropped,
+                      std::move(method),
+                      std::move(reason),
+                      std::move(plane),
+                      std::move(fit),
+                      o.fairness,
+                      o.fairness_weight,
+                      o.base,
+                      o.reject_outliers,
+                      std::move(warnings),
+                      in.read_seconds + clock.lap()};
+  if (o.interrogate) {
+    const RotationalFit& f = std::get<RotationalFit>(result.fit);
+    std::vector<NurbsSurface> surfaces{f.surface()};
+    if (const auto* sphere = std::get_if<SphericalFit>(&f.fit))
+      for (const std::optional<PoleCap>* cap : {&sphere->north_cap, &sphere->south_cap})
+        if (*cap) surfaces.push_back((*cap)->surface);
+    result.interrogation = interrogate_surfaces(surfaces, *o.interrogate);
+  }
+  return result;
 }
 
 FitJobResult run_fit_job(const std::filesystem::path& scan, const FitJobOptions& o) {

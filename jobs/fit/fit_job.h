@@ -16,6 +16,7 @@
 
 #include "designers/scan/cloud_plane.h"
 #include "jobs/fit/profile_interrogation.h"
+#include "jobs/interrogation/surface_interrogation.h"
 #include "jobs/project/fit_project.h"
 #include "src/fit/polar_curve_fit.h"
 #include "src/fit/profile_fairing.h"
@@ -44,6 +45,8 @@ struct FitJobOptions {
       RevolutionMode::automatic;  // F constant around the axis: test / force
   // Profiles: fair F after the fit (MIT §8.2.3); the curve's move and new error are measured.
   std::optional<ProfileFairingOptions> fairing;
+  // Surfaces: curvature maps and reflection lines (MIT §8.2.4) of the fitted surface and caps.
+  std::optional<CurvatureQuantity> interrogate;
   int threads = 2;
   ProgressFn read_progress;  // fraction of the file read
   ProgressFn fit_progress;   // fraction of the fit done (restarts when auto tries a second method)
@@ -91,6 +94,7 @@ struct FitJobResult {
   bool reject_outliers = false;       // as asked; what was left out: report().outliers
   std::vector<std::string> warnings;  // about the fit: a pole that creases or is extrapolated
   double seconds = 0.0;  // read + fit
+  std::optional<SurfaceInterrogation> interrogation;  // surfaces, when asked
 
   bool profile() const { return std::holds_alternative<ProfileFit>(fit); }
   const FitReport& report() const;

@@ -123,8 +123,10 @@ json times_json(const StageTimes& t) {
 
 // The bundle's files as the report lists them: the rendered ones and deviation.ply (written
 // apart, as binary), by name.
-std::vector<std::string> fit_file_list(const std::map<std::string, std::string>& content) {
+std::vector<std::string> fit_file_list(const std::map<std::string, std::string>& content,
+                                       bool interrogated) {
   std::vector<std::string> files = {"deviation.ply", "report.html", "report.json"};
+  if (interrogated) files.push_back("curvature.ply");
   for (const auto& [file, text] : content)
     if (file != "report.html" && file != "report.json") files.push_back(file);
   std::sort(files.begin(), files.end());
@@ -269,6 +271,7 @@ json fit_report_fields(const FitJobResult& r) {
                      {"largest_mm", o.largest}};
   }
   j["warnings"] = r.warnings;
+  if (r.interrogation) j["interrogation"] = surface_interrogation_json(*r.interrogation);
   if (const auto* profile = std::get_if<ProfileFit>(&r.fit)) {
     j["interrogation"] = interrogation_json(profile->interrogation);
     if (profile->fairing) j["fairing"] = fairing_json(*profile->fairing);
@@ -337,7 +340,11 @@ std::map<std::string, std::string> render_fit_outputs(const FitJobResult& r) {
                                  profile->before_fairing ? &*profile->before_fairing : nullptr));
     content["curvature.csv"] = interrogation_csv(profile->interrogation);
   }
-  const std::vector<std::string> files = fit_file_list(content);
+  if (r.interrogation)
+    for (const auto& [name, text] :
+         interrogation_x3d(*r.interrogation, r.input.filename().string()))
+      content[name] = text;
+  const std::vector<std::string> files = fit_file_list(content, r.interrogation.has_value());
   const json report = fit_report_json(r, files);
   content["report.json"] = report_json_text(report);
   content["report.html"] = html_report(r, report, preview);
@@ -362,8 +369,9 @@ std::vector<std::string> write_fit_outputs(const FitJobResult& r,
   for (const auto& [name, text] : content) outputs.add(name, text);
   outputs.add("deviation.ply",
               ply_writer(dir / "deviation.ply", r.points, &colors, &deviation, "deviation"));
+  if (r.interrogation) add_interrogation_ply(outputs, dir, *r.interrogation);
   outputs.commit();
-  return fit_file_list(content);
+  return fit_file_list(content, r.interrogation.has_value());
 }
 
 }  // namespace polarform

@@ -214,12 +214,17 @@ InterrogationCloud interrogation_cloud(const SurfaceInterrogation& q) {
   return c;
 }
 
-void add_interrogation_files(OutputTransaction& outputs, const std::filesystem::path& dir,
-                             const SurfaceInterrogation& q, const std::string& title) {
-  for (const auto& [name, text] : interrogation_x3d(q, title)) outputs.add(name, text);
+void add_interrogation_ply(OutputTransaction& outputs, const std::filesystem::path& dir,
+                           const SurfaceInterrogation& q) {
   const InterrogationCloud cloud = interrogation_cloud(q);
   outputs.add("curvature.ply", ply_writer(dir / "curvature.ply", cloud.points, &cloud.colors,
                                           &cloud.values, curvature_quantity_name(q.shown)));
+}
+
+void add_interrogation_files(OutputTransaction& outputs, const std::filesystem::path& dir,
+                             const SurfaceInterrogation& q, const std::string& title) {
+  for (const auto& [name, text] : interrogation_x3d(q, title)) outputs.add(name, text);
+  add_interrogation_ply(outputs, dir, q);
 }
 
 std::vector<std::string> interrogation_file_names() {

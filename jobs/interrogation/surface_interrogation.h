@@ -56,8 +56,11 @@ struct InterrogationCloud {
 };
 InterrogationCloud interrogation_cloud(const SurfaceInterrogation& q);
 
-// Writes curvature.x3d, reflection.x3d and curvature.ply into the transaction (dir is its folder).
+// Writes curvature.ply, or that and curvature.x3d, reflection.x3d, into the transaction (dir is its
+// folder).
 class OutputTransaction;
+void add_interrogation_ply(OutputTransaction& outputs, const std::filesystem::path& dir,
+                           const SurfaceInterrogation& q);
 void add_interrogation_files(OutputTransaction& outputs, const std::filesystem::path& dir,
                              const SurfaceInterrogation& q, const std::string& title);
 // Their names, sorted.

@@ -45,6 +45,7 @@ SweepJobResult run_sweep_job(const std::filesystem::path& scan, const SweepJobOp
                           : " (> 0.1: not symmetric by PCA)") +
       ", rms of all points " + number_text(v.error.rms) + " mm against the tolerance " +
       number_text(v.tolerance) + " mm";
+  if (o.interrogate) r.interrogation = interrogate_surfaces(v.surfaces, *o.interrogate);
   r.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
 }

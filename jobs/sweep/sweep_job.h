@@ -9,6 +9,7 @@
 #include <string>
 
 #include "designers/sweep/revolution_recovery.h"
+#include "jobs/interrogation/surface_interrogation.h"
 
 namespace polarform {
 
@@ -22,6 +23,7 @@ struct SweepJobOptions {
   double corner_angle_deg = 30.0;
   int threads = 2;
   bool skip_bad = false;
+  std::optional<CurvatureQuantity> interrogate;  // curvature maps, reflection lines
 };
 
 struct SweepJobResult {
@@ -31,6 +33,7 @@ struct SweepJobResult {
   std::string kind = "revolution";
   std::string reason;  // why this kind, with the numbers that decided it
   RevolutionRecovery revolution;
+  std::optional<SurfaceInterrogation> interrogation;
   double read_seconds = 0.0, total_seconds = 0.0;
   bool tolerance_met() const { return revolution.error.max <= revolution.tolerance; }
 };

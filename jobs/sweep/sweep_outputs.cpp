@@ -122,6 +122,7 @@ json sweep_report_json(const SweepJobResult& r, const std::vector<std::string>& 
                     {"axis", v.timings_s.axis},       {"profile", v.timings_s.profile},
                     {"surface", v.timings_s.surface}, {"error", v.timings_s.error},
                     {"total", r.total_seconds}};
+  if (r.interrogation) j["interrogation"] = surface_interrogation_json(*r.interrogation);
   j["files"] = files;
   return j;
 }
@@ -162,6 +163,8 @@ std::vector<std::string> write_sweep_outputs(const SweepJobResult& r,
   std::vector<std::string> files;
   for (const auto& [file, text] : content) files.push_back(file);
   files.insert(files.end(), {"deviation.ply", "report.html", "report.json"});
+  if (r.interrogation)
+    for (const std::string& f : interrogation_file_names()) files.push_back(f);
   std::sort(files.begin(), files.end());
   content["report.html"] = html_report(r, profile_svg, preview_svg, files);
   content["report.json"] = report_json_text(sweep_report_json(r, files));
@@ -176,6 +179,7 @@ std::vector<std::string> write_sweep_outputs(const SweepJobResult& r,
   for (const auto& [name, text] : content) outputs.add(name, text);
   outputs.add("deviation.ply",
               ply_writer(dir / "deviation.ply", r.points, &colors, &deviation, "deviation"));
+  if (r.interrogation) add_interrogation_files(outputs, dir, *r.interrogation, title);
   outputs.commit();
   return files;
 }

@@ -8,11 +8,12 @@
 #include <iostream>
 #include <optional>
 
+#include "jobs/fit/fit_outputs.h"
 #include "src/error.h"
 #include "ui/cli/commands.h"
-#include "ui/cli/progress_bar.h"
 #include "ui/cli/fit_arguments.h"
-#include "jobs/fit/fit_outputs.h"
+#include "ui/cli/interrogate_option.h"
+#include "ui/cli/progress_bar.h"
 
 namespace polarform::cli {
 
@@ -22,7 +23,7 @@ struct FitArgs {
   std::string scan, out;
   // Empty: not given (the project's value, or the default).
   std::string method, closed, pole, degree, ctrl, tol, tol_measure, center, axis;
-  std::string fairness, lambda, base, revolution, fair, fair_tol, fair_passes;
+  std::string fairness, lambda, base, revolution, fair, fair_tol, fair_passes, interrogate;
   std::string threads = "2";
   bool skip_bad = false, reject_outliers = false, quiet = false, lenient = false;
 };
@@ -96,6 +97,7 @@ FitJobOptions job_options(const FitArgs& a, FitJobOptions o) {
   }
   if (!a.fair_passes.empty())
     o.fairing->max_passes = parse_int_pair("--fair-passes", a.fair_passes, 1, 100000).first;
+  if (const auto q = interrogate_option(a.interrogate)) o.interrogate = q;
   o.threads = parse_int_pair("--threads", a.threads, 1, 256).first;
   o.skip_bad = o.skip_bad || a.skip_bad;
   o.reject_outliers = o.reject_outliers || a.reject_outliers;
@@ -201,6 +203,7 @@ void add_fit_command(CLI::App& app) {
                   "auto|yes|no: make F constant around the axis — an exact surface of revolution, "
                   "sphere-like form or circle (default auto: when an F-test of F(u) against "
                   "F(u, v) finds no variation beyond the noise at the 0.1 % level)");
+  add_interrogate_option(*cmd, args->interrogate);
   cmd->add_option("--fair", args->fair,
                   "kjellander|farin: fair a profile's F after the fit (MIT §8.2.3); curvature.svg "
                   "shows before and after");

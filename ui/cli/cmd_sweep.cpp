@@ -9,13 +9,15 @@
 #include "src/number_text.h"
 #include "ui/cli/commands.h"
 #include "ui/cli/fit_arguments.h"
+#include "ui/cli/interrogate_option.h"
 
 namespace polarform::cli {
 
 namespace {
 
 struct SweepArgs {
-  std::string scan, out, kind = "auto", axis, center, tol, degree, corner_angle, threads = "2";
+  std::string scan, out, kind = "auto", axis, center, tol, degree, corner_angle, threads = "2",
+                         interrogate;
   bool skip_bad = false, quiet = false;
 };
 
@@ -43,6 +45,7 @@ void run(const SweepArgs& a) {
   }
   o.threads = parse_int_pair("--threads", a.threads, 1, 256).first;
   o.skip_bad = a.skip_bad;
+  o.interrogate = interrogate_option(a.interrogate);
   const SweepJobResult r = run_sweep_job(a.scan, o);
   const std::vector<std::string> files = write_sweep_outputs(r, a.out);
   const RevolutionRecovery& v = r.revolution;
@@ -91,6 +94,7 @@ void add_sweep_command(CLI::App& app) {
   cmd->add_option("--degree", args->degree, "profile degree p (default 3)");
   cmd->add_option("--corner-angle", args->corner_angle,
                   "turning angle of a profile corner [deg] (default 30)");
+  add_interrogate_option(*cmd, args->interrogate);
   cmd->add_option("--threads", args->threads, "worker threads (default 2)");
   cmd->add_flag("--skip-bad", args->skip_bad, "drop unreadable records instead of failing");
   cmd->add_flag("--quiet,-q", args->quiet, "print nothing but errors");

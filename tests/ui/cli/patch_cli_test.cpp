@@ -34,11 +34,13 @@ void write_inputs(const ScratchDir& dir) {
 TEST(PatchCli, FitsAScanIntoABundle) {
   const ScratchDir dir("patch_cli_ok");
   write_inputs(dir);
-  const CliRun run = run_cli({"patch", (dir / "scan.xyz").string(), "--boundary",
-                              (dir / "boundary.csv").string(), "--out", (dir / "out").string(),
-                              "--correct", "2"},
-                             dir);
+  const CliRun run =
+      run_cli({"patch", (dir / "scan.xyz").string(), "--boundary", (dir / "boundary.csv").string(),
+               "--out", (dir / "out").string(), "--correct", "2", "--interrogate"},
+              dir);
   EXPECT_EQ(run.status, 0) << run.err;
+  for (const char* f : {"curvature.x3d", "curvature.ply", "reflection.x3d"})
+    EXPECT_TRUE(fs::exists(dir / "out" / f)) << f;  // a bare --interrogate: Gaussian curvature
   EXPECT_NE(run.out.find("2000 points, boundary from the boundary file boundary.csv"),
             std::string::npos)
       << run.out;
