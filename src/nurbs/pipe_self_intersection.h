@@ -1,0 +1,28 @@
+// Global self-intersection of a pipe around a spine (Patrikalakis & Maekawa, MIT 13.472J §8.4, the
+// theorem after (8.46); Maekawa, Patrikalakis, Sakkalis & Yu 1998): a pipe of radius r is
+// nonsingular iff r < δ = min{1/κ_max, r_ee, r_bb, r_eb} — the local bound, the radius at which the
+// two end circles meet, half the shortest double normal of the spine (body–body), and the radius at
+// which an end circle touches the tube around the rest of the spine (end–body).
+#pragma once
+
+#include <string>
+
+#include "src/nurbs/nurbs_curve.h"
+
+namespace polarform {
+
+struct PipeBounds {
+  double local = 0.0;      // 1/κ_max (infinity for a straight spine)
+  double end_end = 0.0;    // infinity when the end circles never meet (or a closed spine)
+  double body_body = 0.0;  // half the shortest double normal (infinity when there is none)
+  double end_body = 0.0;   // infinity for a closed spine
+  double delta = 0.0;      // the smallest of the four
+  std::string limiting_mode;  // "local", "end-end", "body-body" or "end-body"
+  double t1 = 0.0, t2 = 0.0;  // where the limiting mode occurs (t2 = t1 for local and end modes)
+};
+
+// closed: the spine is a closed curve (no end circles). Throws InputError for a spine that is not
+// regular (C′ = 0) somewhere.
+PipeBounds pipe_bounds(const NurbsCurve3d& spine, bool closed);
+
+}  // namespace polarform
