@@ -11,6 +11,7 @@ void register_commands(CLI::App& app) {
   add_scan_cam_command(app);
   add_sweep_command(app);
   add_patch_command(app);
+  add_pipe_command(app);
 }
 
 }  // namespace polarform::cli

@@ -51,5 +51,6 @@ void add_viz_command(CLI::App& app);
 void add_scan_cam_command(CLI::App& app);
 void add_sweep_command(CLI::App& app);
 void add_patch_command(CLI::App& app);
+void add_pipe_command(CLI::App& app);
 
 }  // namespace polarform::cli

@@ -1,0 +1,76 @@
+#include "jobs/pipe/pipe_job.h"
+
+#include <chrono>
+#include <cmath>
+
+#include "src/error.h"
+#include "src/io/spine_csv.h"
+#include "src/number_text.h"
+#include "src/nurbs/curve_interpolation.h"
+
+namespace polarform {
+
+NurbsCurve3d spine_through(const Eigen::Matrix3Xd& p, bool closed) {
+  const Eigen::Index n = p.cols();
+  Eigen::VectorXd t(n);
+  t[0] = 0.0;
+  for (Eigen::Index k = 1; k < n; ++k) t[k] = t[k - 1] + (p.col(k) - p.col(k - 1)).norm();
+  CubicEnds ends;
+  if (closed && n >= 3) {
+    // The chord through the seam's neighbours, per unit of chord length: one tangent at both ends.
+    const Eigen::Vector3d d = (p.col(1) - p.col(n - 2)) / (t[1] + t[n - 1] - t[n - 2]);
+    ends.start_tangent = d;
+    ends.end_tangent = d;
+  }
+  const BSpline s = interpolate_cubic(p, t, ends);
+  NurbsCurve3d::Points ctrl;
+  for (int i = 0; i < s.size(); ++i) ctrl.push_back(s.coefs().col(i));
+  return NurbsCurve3d(s.degree(), s.knots(), ctrl);
+}
+
+PipeJobResult run_pipe_job(const std::filesystem::path& file, const PipeJobOptions& o) {
+  if (!(o.radius > 0) || !std::isfinite(o.radius))
+    throw InputError("--radius: expected a positive length in mm");
+  const auto t0 = std::chrono::steady_clock::now();
+  PipeJobResult r;
+  r.input = file;
+  r.radius = o.radius;
+  r.frame = o.frame;
+  r.points = read_spine_csv(file);
+  const double size = (r.points.rowwise().maxCoeff() - r.points.rowwise().minCoeff()).norm();
+  const bool ends_meet =
+      (r.points.col(0) - r.points.col(r.points.cols() - 1)).norm() <= 1e-9 * size;
+  r.closed =
+      o.closure == SpineClosure::closed || (o.closure == SpineClosure::automatic && ends_meet);
+  Eigen::Matrix3Xd pts = r.points;
+  if (r.closed && !ends_meet) {  // --closed yes: the loop returns to its first point
+    pts.conservativeResize(3, pts.cols() + 1);
+    pts.col(pts.cols() - 1) = pts.col(0);
+  }
+  if (r.closed && pts.cols() < 4)
+    throw InputError(file.string() + ": a closed spine needs at least 3 distinct points");
+  r.spine = spine_through(pts, r.closed);
+  r.curvature = max_curvature(r.spine);
+  r.bounds = pipe_bounds(r.spine, r.closed);
+  r.nonsingular = o.radius < r.bounds.delta;
+  if (!r.nonsingular) {
+    const std::string where = r.bounds.t1 == r.bounds.t2
+                                  ? "at " + number_text(r.bounds.t1) + " mm along the spine"
+                                  : "between " + number_text(r.bounds.t1) + " and " +
+                                        number_text(r.bounds.t2) + " mm along the spine";
+    const std::string what =
+        "--radius " + number_text(o.radius) +
+        " mm: the pipe self-intersects for radii at or beyond δ = " + number_text(r.bounds.delta) +
+        " mm (" + r.bounds.limiting_mode + ", " + where + ")";
+    if (!o.allow_self_intersection)
+      throw InputError(file.string() + ": " + what +
+                       "; use a smaller radius or --allow-self-intersection");
+    r.warnings.push_back(what);
+  }
+  r.tolerance = o.tolerance > 0 ? o.tolerance : 1e-4 * size;
+  r.pipe = pipe_surface(r.spine, o.radius, o.frame, r.tolerance);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return r;
+}
+
+}  // namespace polarform

@@ -1,0 +1,121 @@
+// The pipe job end to end: a U-shaped spine whose bound δ = d comes from its half circle and its
+// legs' double normal; a radius below it gives the bundle, one at it is refused by name unless
+// allowed; a straight spine gives an exact cylinder; the spine reader refuses bad files by line.
+#include "jobs/pipe/pipe_job.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <numbers>
+
+#include "jobs/pipe/pipe_outputs.h"
+#include "src/error.h"
+#include "src/io/spine_csv.h"
+
+namespace polarform {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Legs along x from x = 0 to 20 at y = ±d, joined by a half circle of radius d about (20, 0).
+fs::path write_u_spine(const fs::path& dir, double d) {
+  fs::create_directories(dir);
+  const fs::path file = dir / "u.csv";
+  std::ofstream out(file);
+  out.precision(17);
+  out << "x,y,z\n";
+  for (int k = 0; k <= 40; ++k) out << 0.5 * k << ',' << -d << ",0\n";
+  for (int k = 1; k < 60; ++k) {
+    const double a = -std::numbers::pi / 2 + std::numbers::pi * k / 60;
+    out << 20 + d * std::cos(a) << ',' << d * std::sin(a) << ",0\n";
+  }
+  for (int k = 40; k >= 0; --k) out << 0.5 * k << ',' << d << ",0\n";
+  return file;
+}
+
+TEST(PipeJob, USpineBoundAndBundle) {
+  const fs::path dir = fs::temp_directory_path() / "polarform_pipe_job_u";
+  fs::remove_all(dir);
+  const fs::path spine = write_u_spine(dir, 4.0);
+  PipeJobOptions o;
+  o.radius = 3.0;
+  const PipeJobResult r = run_pipe_job(spine, o);
+  // The interpolating cubic approximates the half circle: its curvature within a few % of 1/d.
+  EXPECT_NEAR(r.bounds.delta, 4.0, 0.2);
+  EXPECT_TRUE(r.nonsingular);
+  EXPECT_FALSE(r.pipe.exact);
+  EXPECT_LE(r.pipe.max_error, r.tolerance);
+  const std::vector<std::string> files = write_pipe_outputs(r, dir / "out");
+  for (const char* f : {"pipe.igs", "pipe.stp", "pipe.x3d", "spine.igs", "curvature.svg",
+                        "report.json", "report.html"})
+    EXPECT_TRUE(fs::exists(dir / "out" / f)) << f;
+  std::ifstream in(dir / "out" / "report.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["command"], "pipe");
+  EXPECT_TRUE(j["nonsingular"].get<bool>());
+  EXPECT_NEAR(j["bounds_mm"]["delta"].get<double>(), r.bounds.delta, 1e-9);
+}
+
+TEST(PipeJob, ARadiusAtTheBoundIsAnInfeasibleDesign) {
+  const fs::path dir = fs::temp_directory_path() / "polarform_pipe_job_bad";
+  fs::remove_all(dir);
+  const fs::path spine = write_u_spine(dir, 4.0);
+  PipeJobOptions o;
+  o.radius = 4.5;
+  try {
+    run_pipe_job(spine, o);
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--radius 4.5 mm: the pipe self-intersects for radii at "
+                                         "or beyond δ = "),
+              std::string::npos)
+        << e.what();
+  }
+  o.allow_self_intersection = true;
+  const PipeJobResult r = run_pipe_job(spine, o);
+  EXPECT_FALSE(r.nonsingular);
+  EXPECT_EQ(r.warnings.size(), 1u);
+}
+
+TEST(PipeJob, AStraightSpineGivesAnExactCylinder) {
+  const fs::path dir = fs::temp_directory_path() / "polarform_pipe_job_line";
+  fs::create_directories(dir);
+  {
+    std::ofstream out(dir / "line.csv");
+    out << "x,y,z\n0,0,0\n1,2,3\n2,4,6\n";
+  }
+  PipeJobOptions o;
+  o.radius = 0.5;
+  const PipeJobResult r = run_pipe_job(dir / "line.csv", o);
+  EXPECT_TRUE(r.pipe.exact);
+  EXPECT_TRUE(std::isinf(r.bounds.delta));
+  for (int a = 0; a <= 20; ++a)
+    for (int b = 0; b <= 20; ++b) {
+      const NurbsSurface& s = r.pipe.surface;
+      const Eigen::Vector3d p = s.point(s.front_u() + (s.back_u() - s.front_u()) * a / 20,
+                                        s.front_v() + (s.back_v() - s.front_v()) * b / 20);
+      const Eigen::Vector3d axis = Eigen::Vector3d(1, 2, 3).normalized();
+      EXPECT_NEAR((p - p.dot(axis) * axis).norm(), 0.5, 1e-12);
+    }
+}
+
+TEST(SpineCsv, RefusalsNameTheLine) {
+  const auto refusal = [](const std::string& text) {
+    try {
+      parse_spine_csv(text, "s.csv");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(refusal("x,y\n"), "s.csv:1: header 'x,y': expected 'x,y,z'");
+  EXPECT_EQ(refusal("x,y,z\n1,2,3\n1,2,3\n"), "s.csv:3: the point repeats the one before it");
+  EXPECT_EQ(refusal("x,y,z\n1,2,nan\n"), "s.csv:2: z 'nan': expected a finite number");
+  EXPECT_EQ(refusal("x,y,z\n1,2,3\n"), "s.csv: 1 spine point(s), expected at least 2");
+  EXPECT_EQ(parse_spine_csv("# spine\nx,y,z\n0,0,0\n1,0,0\n", "s.csv").cols(), 2);
+}
+
+}  // namespace
+}  // namespace polarform
