@@ -27,7 +27,14 @@ struct PipeSurface {
   int sections = 0;         // stations skinned (approximate pipes)
 };
 
-// Throws InputError for r <= 0 or a tolerance <= 0 when the pipe is not exact.
+// The exact pipes start from the frame at the spine's start (the fixed frame for a line when
+// Frenet is asked, which is undefined there); their v runs over the spine's domain, but along a
+// line linearly and along an arc by the rational quadratic arc's parameter, not the spine's. The
+// skinned pipe starts with max(5, 2·spans + 1) stations equally spaced in t and doubles them
+// (up to 4097); max_error is the larger of | |S − C(t*)| − r | (t* the spine point closest to a
+// surface sample) and the distance from analytic pipe points to the surface, at 8 × 32 samples
+// per station interval. Throws InputError for r <= 0 or a tolerance <= 0 when the pipe is not
+// exact, NumericalError when 4097 stations do not meet the tolerance.
 PipeSurface pipe_surface(const NurbsCurve3d& spine, double radius, FrameRule rule,
                          double tolerance);
 
