@@ -18,6 +18,8 @@ struct SpineCurvature {
   double kappa_max = 0.0;  // 1/mm
   double t_at = 0.0;       // where
 };
+// κ_max = infinity at a corner of the spine (a knot where the unit tangent jumps by more than
+// 1e-9 rad): no pipe around it is locally regular. A straight spine gives 0.
 SpineCurvature max_curvature(const NurbsCurve3d& spine);
 
 struct PipeSurface {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "src/nurbs/bernstein_roots.h"
@@ -124,16 +125,25 @@ double golden_max(const NurbsCurve3d& piece, double a, double b) {
 
 }  // namespace
 
-// MIT 13.472J (8.46): κ_max over the Bézier pieces, with one-sided values at the breaks.
+// MIT 13.472J (8.46): κ_max over the Bézier pieces, with one-sided values at the breaks and
+// infinity at a corner (a break where the unit tangent jumps by more than 1e-9 rad).
 SpineCurvature max_curvature(const NurbsCurve3d& spine) {
   const BezierSegments bz = decompose_bezier(spine.homogeneous());
   SpineCurvature best{-1.0, spine.front()};
   const auto consider = [&](double kappa, double t) {
     if (kappa > best.kappa_max) best = {kappa, t};
   };
+  Eigen::Vector3d previous_end = Eigen::Vector3d::Zero();  // unit tangent at the previous end
   for (std::size_t i = 0; i < bz.segments.size(); ++i) {
     const Eigen::MatrixXd& h = bz.segments[i];
     const double a = bz.breaks[i], span = bz.breaks[i + 1] - a;
+    Knots knots(static_cast<std::size_t>(bz.degree + 1), 0.0);
+    knots.insert(knots.end(), static_cast<std::size_t>(bz.degree + 1), 1.0);
+    const NurbsCurve3d piece(BSpline(bz.degree, std::move(knots), h));
+    const Eigen::Vector3d start = piece.derivatives(0.0, 1)[1].normalized();
+    if (i > 0 && !(start.cross(previous_end).norm() <= 1e-9 && start.dot(previous_end) > 0))
+      consider(std::numeric_limits<double>::infinity(), a);  // a corner: κ is unbounded there
+    previous_end = piece.derivatives(1.0, 1)[1].normalized();
     if (bz.degree < 2) {
       consider(0.0, a);
       continue;
@@ -148,9 +158,6 @@ SpineCurvature max_curvature(const NurbsCurve3d& spine) {
       }
       continue;
     }
-    Knots knots(static_cast<std::size_t>(bz.degree + 1), 0.0);
-    knots.insert(knots.end(), static_cast<std::size_t>(bz.degree + 1), 1.0);
-    const NurbsCurve3d piece(BSpline(bz.degree, std::move(knots), h));
     constexpr int grid = 256;
     std::vector<double> k(grid + 1);
     for (int s = 0; s <= grid; ++s) k[s] = rational_kappa(piece, static_cast<double>(s) / grid);

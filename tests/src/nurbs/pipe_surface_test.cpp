@@ -165,6 +165,18 @@ TEST_P(SkinnedPipe, AroundASineSpineMeetsTheTolerance) {
 INSTANTIATE_TEST_SUITE_P(PipeSurface, SkinnedPipe,
                          ::testing::Values(FrameRule::rmf, FrameRule::frenet, FrameRule::fixed));
 
+// Around a corner no number of stations reaches the tolerance: NumericalError with the numbers.
+TEST(PipeSurface, CornerSpineCannotBeSkinnedToTolerance) {
+  const NurbsCurve3d corner(1, {0, 0, 1, 2, 2},
+                            NurbsCurve3d::Points{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}});
+  try {
+    pipe_surface(corner, 0.1, FrameRule::rmf, 1e-4);
+    ADD_FAILURE() << "no NumericalError";
+  } catch (const NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("4097 stations"), std::string::npos) << e.what();
+  }
+}
+
 TEST(PipeSurface, Refusals) {
   const NurbsCurve3d spine = sine_spine();
   EXPECT_THROW(pipe_surface(spine, 0.0, FrameRule::rmf, 1e-4), InputError);
@@ -202,6 +214,18 @@ TEST(SpineCurvature, RationalEllipseArcPeaksAtTheMajorVertex) {
   const SpineCurvature k = max_curvature(arc);
   EXPECT_NEAR(k.kappa_max, a / (b * b), 1e-12);
   EXPECT_NEAR(k.t_at, 0.5, 1e-6);
+}
+
+// A corner (a C0 knot where the tangent turns) has unbounded curvature; a straight spine none.
+TEST(SpineCurvature, CornerIsUnboundedAndALineIsFlat) {
+  const NurbsCurve3d corner(1, {0, 0, 1, 2, 2},
+                            NurbsCurve3d::Points{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}});
+  const SpineCurvature k = max_curvature(corner);
+  EXPECT_TRUE(std::isinf(k.kappa_max));
+  EXPECT_EQ(k.t_at, 1.0);
+  const NurbsCurve3d line(2, {0, 0, 0, 1, 1, 1},
+                          NurbsCurve3d::Points{{0, 0, 0}, {1, 1, 1}, {3, 3, 3}});
+  EXPECT_EQ(max_curvature(line).kappa_max, 0.0);
 }
 
 // M7-4: on random cubic Béziers (and a two-piece cubic B-spline), κ_max by root isolation equals
