@@ -24,10 +24,11 @@ Jet jet(const NurbsCurve3d& spine, double t) {
   return {d[0], d[1], d[2]};
 }
 
-// The principal normal n = (C' × C″) × C' / |…| (MIT (8.41)), or nothing where κ|C'|³ is zero.
+// The principal normal n = (C' × C″) × C' / |…| (MIT (8.41)), or nothing where C″ is parallel
+// to C' to 1e-12 rad (κ = 0).
 bool principal_normal(const Jet& j, Eigen::Vector3d& n) {
   const Eigen::Vector3d b = j.d1.cross(j.d2);
-  if (!(b.norm() > 1e-12 * j.d1.squaredNorm() * (1.0 + j.d2.norm() / j.d1.norm()))) return false;
+  if (!(b.norm() > 1e-12 * j.d1.norm() * j.d2.norm())) return false;
   n = b.cross(j.d1).normalized();
   return true;
 }
