@@ -18,6 +18,8 @@ struct SpineCurvature {
   double kappa_max = 0.0;  // 1/mm
   double t_at = 0.0;       // where
 };
+// κ_max = infinity at a corner of the spine (a knot where the unit tangent jumps by more than
+// 1e-9 rad): no pipe around it is locally regular. A straight spine gives 0.
 SpineCurvature max_curvature(const NurbsCurve3d& spine);
 
 struct PipeSurface {
@@ -27,7 +29,14 @@ struct PipeSurface {
   int sections = 0;         // stations skinned (approximate pipes)
 };
 
-// Throws InputError for r <= 0 or a tolerance <= 0 when the pipe is not exact.
+// The exact pipes start from the frame at the spine's start (the fixed frame for a line when
+// Frenet is asked, which is undefined there); their v runs over the spine's domain, but along a
+// line linearly and along an arc by the rational quadratic arc's parameter, not the spine's. The
+// skinned pipe starts with max(5, 2·spans + 1) stations equally spaced in t and doubles them
+// (up to 4097); max_error is the larger of | |S − C(t*)| − r | (t* the spine point closest to a
+// surface sample) and the distance from analytic pipe points to the surface, at 8 × 32 samples
+// per station interval. Throws InputError for r <= 0 or a tolerance <= 0 when the pipe is not
+// exact, NumericalError when 4097 stations do not meet the tolerance.
 PipeSurface pipe_surface(const NurbsCurve3d& spine, double radius, FrameRule rule,
                          double tolerance);
 

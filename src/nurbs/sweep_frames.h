@@ -20,9 +20,13 @@ struct SpineFrame {
 };
 
 // Frames at the parameters ts (increasing, inside the spine's domain). `initial_x` (optional) is
-// the first frame's x direction before it is made orthogonal to the tangent (rmf, fixed); else it
-// is chosen from the spine (the principal normal where defined, else a direction most orthogonal
-// to the tangent). Throws InputError for Frenet where the curvature vanishes, or an empty ts.
+// the first frame's x direction before it is made orthogonal to the tangent (rmf) or the constant
+// X projected on every normal plane (fixed); else it is chosen from the spine (the principal
+// normal where defined, else the coordinate axis most orthogonal to the tangent), and the fixed
+// rule on a planar spine keeps y = the plane normal. The rmf integrates between the requested
+// parameters in at least 64 steps, and enough that the tangent turns by at most 2e-3 rad per
+// step. Throws InputError for Frenet where the curvature vanishes, a spine that is not regular
+// at a requested parameter, a fixed X parallel to a tangent, or ts empty, unordered or outside.
 std::vector<SpineFrame> spine_frames(const NurbsCurve3d& spine, const std::vector<double>& ts,
                                      FrameRule rule, const Eigen::Vector3d* initial_x = nullptr);
 
