@@ -266,7 +266,8 @@ PipeSurface pipe_surface(const NurbsCurve3d& spine, double radius, FrameRule rul
           k + 1 == n ? spine.back() : spine.front() + (spine.back() - spine.front()) * k / (n - 1);
     const NurbsSurface s = skin(spine, ts, radius, rule);
     error = deviation(s, spine, ts, radius, rule);
-    if (error <= tolerance) return {s, false, error, n};
+    // 10 % margin: the sampled maximum reads up to ~1.5 % below an independent dense check.
+    if (error <= 0.9 * tolerance) return {s, false, error, n};
   }
   throw NumericalError("pipe surface: " + std::to_string(kMaxStations + 1) +
                        " stations leave a max deviation of " + to_text(error) +
