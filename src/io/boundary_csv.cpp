@@ -1,31 +1,15 @@
 #include "src/io/boundary_csv.h"
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <vector>
 
 #include "src/error.h"
+#include "src/io/csv_text.h"
 #include "src/io/text_scan.h"
 
 namespace polarform {
 
 namespace {
-
-using io_detail::parse_double;
-using io_detail::strip_comment;
-using io_detail::trim;
-
-// The comma-separated fields of a line, blanks around them trimmed.
-std::vector<std::string_view> comma_fields(std::string_view line) {
-  std::vector<std::string_view> out;
-  while (true) {
-    const std::size_t c = line.find(',');
-    out.push_back(trim(line.substr(0, c)));
-    if (c == std::string_view::npos) return out;
-    line.remove_prefix(c + 1);
-  }
-}
 
 constexpr const char* kHeader = "curve,x,y,z";
 
@@ -33,18 +17,9 @@ constexpr const char* kHeader = "curve,x,y,z";
 
 BoundaryPolylines parse_boundary_csv(std::string_view text, const std::string& name) {
   std::array<std::vector<Eigen::Vector3d>, 4> points;
-  std::size_t line_no = 0;
   bool header = false;
   int current = -1;  // the curve of the previous row
-  while (!text.empty()) {
-    const std::size_t nl = text.find('\n');
-    std::string_view line = text.substr(0, nl);
-    text.remove_prefix(nl == std::string_view::npos ? text.size() : nl + 1);
-    ++line_no;
-    if (line_no == 1 && line.starts_with("\xEF\xBB\xBF")) line.remove_prefix(3);
-    line = strip_comment(line);
-    if (line.empty()) continue;
-    const std::string where = name + ":" + std::to_string(line_no) + ": ";
+  for_each_data_line(text, name, [&](std::string_view line, const std::string& where) {
     const std::vector<std::string_view> f = comma_fields(line);
     if (!header) {
       const char* names[4] = {"curve", "x", "y", "z"};
@@ -53,13 +28,13 @@ BoundaryPolylines parse_boundary_csv(std::string_view text, const std::string& n
       if (!ok)
         throw InputError(where + "header '" + std::string(line) + "': expected '" + kHeader + "'");
       header = true;
-      continue;
+      return;
     }
     if (f.size() != 4)
       throw InputError(where + "expected 4 fields (" + kHeader + "), found " +
                        std::to_string(f.size()));
     double c = 0.0;
-    if (!parse_double(f[0], c) || !(c == 0 || c == 1 || c == 2 || c == 3))
+    if (!io_detail::parse_double(f[0], c) || !(c == 0 || c == 1 || c == 2 || c == 3))
       throw InputError(where + "curve '" + std::string(f[0]) + "': expected 0, 1, 2 or 3");
     const int k = static_cast<int>(c);
     if (k < current)
@@ -72,11 +47,11 @@ BoundaryPolylines parse_boundary_csv(std::string_view text, const std::string& n
     Eigen::Vector3d p;
     const char* axis[3] = {"x", "y", "z"};
     for (int i = 0; i < 3; ++i)
-      if (!parse_double(f[static_cast<std::size_t>(i + 1)], p[i]) || !std::isfinite(p[i]))
+      if (!io_detail::parse_double(f[static_cast<std::size_t>(i + 1)], p[i]) || !std::isfinite(p[i]))
         throw InputError(where + axis[i] + " '" + std::string(f[static_cast<std::size_t>(i + 1)]) +
                          "': expected a finite number");
     points[static_cast<std::size_t>(k)].push_back(p);
-  }
+  });
   if (!header) throw InputError(name + ": no header line; expected '" + kHeader + "'");
   BoundaryPolylines out;
   for (std::size_t k = 0; k < 4; ++k) {
@@ -92,11 +67,7 @@ BoundaryPolylines parse_boundary_csv(std::string_view text, const std::string& n
 }
 
 BoundaryPolylines read_boundary_csv(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string() + ": cannot open file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_boundary_csv(text.str(), file.string());
+  return parse_boundary_csv(read_text_file(file), file.string());
 }
 
 }  // namespace polarform

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "src/error.h"
+#include "src/io/csv_text.h"
 #include "src/number_text.h"
 #include "src/units.h"
 
@@ -137,11 +138,7 @@ ScalarGrid parse_scalar_grid(std::string_view text, const std::string& name) {
 }
 
 ScalarGrid read_scalar_grid(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string() + ": cannot open file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_scalar_grid(text.str(), file.string());
+  return parse_scalar_grid(read_text_file(file), file.string());
 }
 
 }  // namespace polarform
