@@ -18,7 +18,10 @@ struct PipeBounds {
   double end_body = 0.0;   // infinity for a closed spine
   double delta = 0.0;      // the smallest of the four
   std::string limiting_mode;  // "local", "end-end", "body-body" or "end-body"
-  double t1 = 0.0, t2 = 0.0;  // where the limiting mode occurs (t2 = t1 for local and end modes)
+  // Where the limiting mode occurs: local — t1 = t2 = the parameter of κ_max; body–body — the feet
+  // of the shortest double normal (t1 < t2); end–end — the front and the back; end–body — the end
+  // (t1) and the foot on the body where its circle first touches the tube (t2).
+  double t1 = 0.0, t2 = 0.0;
 };
 
 // closed: the spine is a closed curve (no end circles). Throws InputError for a spine that is not

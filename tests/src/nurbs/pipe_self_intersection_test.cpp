@@ -1,0 +1,198 @@
+// Pipe self-intersection bounds (spec M8): the U-shaped spine (body–body = local = d), a 350° arc
+// (no false positives: δ = R, mode local), random cubic spines whose δ is confirmed by sampling
+// the pipe against exact curve inversion, a straight spine (all infinite), a closed circle, and
+// the refusals.
+#include "src/nurbs/pipe_self_intersection.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <random>
+#include <string>
+
+#include "src/base/arc_curves.h"
+#include "src/error.h"
+#include "src/nurbs/point_inversion.h"
+
+namespace polarform {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kPi = std::numbers::pi;
+
+// A circle arc of radius R from angle 0 through `sweep` (z = 0), as `pieces` RQB arcs joined with
+// double knots.
+NurbsCurve3d arc_spine(double R, double sweep, int pieces) {
+  NurbsCurve3d::Points points;
+  std::vector<double> weights, interior;
+  for (int k = 0; k < pieces; ++k) {
+    const NurbsCurve2d a = rqb_arc(k * sweep / pieces, sweep / pieces);
+    for (int i = k == 0 ? 0 : 1; i < 3; ++i) {
+      const Eigen::Vector2d p = R * a.control_point(i);
+      points.emplace_back(p.x(), p.y(), 0.0);
+      weights.push_back(a.weight(i));
+    }
+    if (k > 0) interior.insert(interior.end(), 2, k);
+  }
+  return NurbsCurve3d(2, clamped_knots(2, 0.0, pieces, interior), points, weights);
+}
+
+// Legs of lengths `left` and `right` at x = ∓d going down from y = 0, joined over the top by a half
+// circle of radius d about the origin (two RQB quarter circles): degree 2, double knots at the
+// joins.
+NurbsCurve3d u_spine(double d, double left, double right) {
+  const double w = std::sqrt(0.5);
+  const NurbsCurve3d::Points points = {{-d, -left, 0}, {-d, -left / 2, 0}, {-d, 0, 0},
+                                       {-d, d, 0},     {0, d, 0},          {d, d, 0},
+                                       {d, 0, 0},      {d, -right / 2, 0}, {d, -right, 0}};
+  const std::vector<double> weights = {1, 1, 1, w, 1, w, 1, 1, 1};
+  return NurbsCurve3d(2, clamped_knots(2, 0.0, 4.0, {1, 1, 2, 2, 3, 3}), points, weights);
+}
+
+// A seeded cubic spine: `n` random control points in [−1, 1]³, uniform knots.
+NurbsCurve3d random_spine(unsigned seed, int n) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> coord(-1.0, 1.0);
+  NurbsCurve3d::Points points(n);
+  for (auto& p : points) p = {coord(rng), coord(rng), coord(rng)};
+  return NurbsCurve3d(3, uniform_clamped_knots(3, n - 3, 0.0, 1.0), points);
+}
+
+// The pipe of radius r sampled at parameter t: P(t, θ) = C(t) + r(cos θ n + sin θ b), n, b ⊥ C′(t),
+// `around` angles offset by a golden fraction; min of (distance to the spine − r) and max of its
+// magnitude, distances by exact curve inversion (closest_point).
+struct PipeSampling {
+  double min_gap = kInf, max_abs_gap = 0.0;
+  int samples = 0;
+};
+void sample_circle(const NurbsCurve3d& spine, double r, double t, int around, PipeSampling& out) {
+  const auto d = spine.derivatives(t, 1);
+  const Eigen::Vector3d T = d[1].normalized();
+  Eigen::Index k;
+  T.cwiseAbs().minCoeff(&k);
+  const Eigen::Vector3d n = T.cross(Eigen::Vector3d::Unit(k)).normalized(), b = T.cross(n);
+  for (int j = 0; j < around; ++j) {
+    const double th = 2 * kPi * (j + 0.381966) / around;
+    const Eigen::Vector3d p = d[0] + r * (std::cos(th) * n + std::sin(th) * b);
+    const double gap = closest_point(spine, p).distance - r;
+    out.min_gap = std::min(out.min_gap, gap);
+    out.max_abs_gap = std::max(out.max_abs_gap, std::abs(gap));
+    ++out.samples;
+  }
+}
+
+// Dense sampling of the pipe on [0, 1]: both end circles (360 angles), 600 circles at golden
+// offsets along the spine and 200 in each window of width 0.01 around t1 and t2 (120 angles).
+// The golden offsets keep the feet off the dyadic points of the knot spans, where closest_point
+// can miss the minimum (a root of C′·(C − P) exactly on a Bernstein subdivision point).
+PipeSampling sample_pipe(const NurbsCurve3d& spine, double r, double t1, double t2) {
+  PipeSampling out;
+  sample_circle(spine, r, 0.0, 360, out);
+  sample_circle(spine, r, 1.0, 360, out);
+  for (int i = 0; i < 600; ++i) sample_circle(spine, r, (i + 0.618034) / 600, 120, out);
+  for (const double c : {t1, t2})
+    for (int i = 0; i < 200; ++i)
+      if (const double t = c + 0.01 * ((i + 0.618034) / 200 - 0.5); t > 0.0 && t < 1.0)
+        sample_circle(spine, r, t, 120, out);
+  return out;
+}
+
+TEST(PipeBounds, USpineBodyBodyAndLocalAreTheBendRadius) {
+  const double d = 1.5;
+  const PipeBounds b = pipe_bounds(u_spine(d, 4.0, 4.0), false);
+  EXPECT_NEAR(b.local, d, 1e-9);
+  EXPECT_NEAR(b.body_body, d, 1e-9);  // the legs' double normals have length 2d
+  EXPECT_NEAR(b.end_end, d, 1e-9);    // coplanar end circles 2d apart
+  // Each end circle reaches the other leg only at its end point, beyond the open end: no contact.
+  EXPECT_GT(b.end_body, 1.1 * d);
+  EXPECT_NEAR(b.delta, d, 1e-9);
+  EXPECT_EQ(b.limiting_mode, "local");
+}
+
+TEST(PipeBounds, UWithALongerLegHasEndBodyContactAtTheBendRadius) {
+  // The left end circle (in the plane y = −3) meets the right leg's tube at (d, −3): g = 4d²/4d.
+  const double d = 1.5;
+  const PipeBounds b = pipe_bounds(u_spine(d, 3.0, 5.0), false);
+  EXPECT_NEAR(b.end_body, d, 1e-9);
+  EXPECT_EQ(b.end_end, kInf);  // the end circles lie in parallel planes y = −3 and y = −5
+  EXPECT_NEAR(b.body_body, d, 1e-9);
+  EXPECT_NEAR(b.delta, d, 1e-9);
+}
+
+TEST(PipeBounds, ArcOf350DegreesHasNoFalsePositives) {
+  const double R = 2.0;
+  const PipeBounds b = pipe_bounds(arc_spine(R, 350.0 * kPi / 180.0, 4), false);
+  EXPECT_NEAR(b.local, R, 1e-9);
+  EXPECT_NEAR(b.body_body, R, 1e-9);  // every diameter is a double normal
+  // The end circles' closest points are 2(R − r) sin 5° apart: they meet at r = R, not before.
+  EXPECT_NEAR(b.end_end, R, 1e-9);
+  EXPECT_GE(b.end_end, R * (1 - 1e-10));
+  EXPECT_GE(b.end_body, R * (1 - 1e-10));
+  EXPECT_NEAR(b.delta, R, 1e-9);
+  EXPECT_EQ(b.limiting_mode, "local");
+}
+
+TEST(PipeBounds, ClosedCircleHasNoEnds) {
+  const double R = 0.75;
+  const PipeBounds b = pipe_bounds(arc_spine(R, 2 * kPi, 4), true);
+  EXPECT_NEAR(b.local, R, 1e-9);
+  EXPECT_NEAR(b.body_body, R, 1e-9);
+  EXPECT_EQ(b.end_end, kInf);
+  EXPECT_EQ(b.end_body, kInf);
+  EXPECT_NEAR(b.delta, R, 1e-9);
+  EXPECT_EQ(b.limiting_mode, "local");
+}
+
+TEST(PipeBounds, StraightSpineIsUnbounded) {
+  const Eigen::Vector3d dir(1.0, 2.0, -3.0), base(0.3, -0.2, 0.1);
+  NurbsCurve3d::Points points;
+  for (int i = 0; i < 6; ++i) points.push_back(base + dir * i / 5.0);
+  const PipeBounds b =
+      pipe_bounds(NurbsCurve3d(3, uniform_clamped_knots(3, 3, 0.0, 1.0), points), false);
+  EXPECT_EQ(b.local, kInf);
+  EXPECT_EQ(b.body_body, kInf);
+  EXPECT_EQ(b.end_end, kInf);
+  EXPECT_EQ(b.end_body, kInf);
+  EXPECT_EQ(b.delta, kInf);
+}
+
+// Seeded cubic spines limited by each interior mode: 8 control points, seeds 4 and 2 (body–body,
+// δ ≈ 0.0734 and ≈ 3.66e-4, a near-touching spine) and 13 (local, κ_max between samples next to
+// a knot).
+TEST(PipeBounds, RandomSpineDeltaIsConfirmedBySamplingThePipe) {
+  const struct {
+    unsigned seed;
+    const char* mode;
+  } cases[] = {{4, "body-body"}, {2, "body-body"}, {13, "local"}};
+  for (const auto& c : cases) {
+    SCOPED_TRACE("seed " + std::to_string(c.seed));
+    const NurbsCurve3d spine = random_spine(c.seed, 8);
+    const auto start = std::chrono::steady_clock::now();
+    const PipeBounds b = pipe_bounds(spine, false);
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(b.limiting_mode, c.mode);
+    const PipeSampling below = sample_pipe(spine, 0.999 * b.delta, b.t1, b.t2);
+    const PipeSampling above = sample_pipe(spine, 1.01 * b.delta, b.t1, b.t2);
+    EXPECT_LE(below.max_abs_gap, 1e-9);  // every sample is at distance r from the spine
+    EXPECT_LT(above.min_gap, -1e-7);     // some sample is inside the tube elsewhere
+    std::printf(
+        "seed %u: delta %.12g (%s at %.6f, %.6f), %.2f ms; %d samples; 0.999 delta: "
+        "max |gap| %.2g; 1.01 delta: min gap %.3g\n",
+        c.seed, b.delta, b.limiting_mode.c_str(), b.t1, b.t2, ms, below.samples, below.max_abs_gap,
+        above.min_gap);
+  }
+}
+
+TEST(PipeBounds, RefusesIrregularAndFalselyClosedSpines) {
+  const NurbsCurve3d::Points cusp = {{0, 0, 0}, {0, 0, 0}, {1, 1, 0}, {2, 0, 0}};
+  EXPECT_THROW(pipe_bounds(NurbsCurve3d(3, clamped_knots(3, 0.0, 1.0), cusp), false), InputError);
+  EXPECT_THROW(pipe_bounds(arc_spine(1.0, kPi, 2), true), InputError);
+}
+
+}  // namespace
+}  // namespace polarform
