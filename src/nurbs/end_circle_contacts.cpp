@@ -34,7 +34,9 @@ double contact_radius(const Eigen::Vector3d& end, const Eigen::Vector3d& unit_ta
 // contact with the pipe surface: there |E − C(t)| ≥ r = g(t*) for t near t*, so E − C(t*) ⊥ C′(t*)
 // and E lies on the circle of the pipe at t*. A minimum at the other end only means that the end
 // circle enters the ball around that end point, beyond the open end of the pipe: the surface is
-// met later, at an interior foot or where the end circles cross (end–end).
+// met later, at an interior foot or where the end circles cross (end–end) — or, in principle, by
+// an end circle that dips into the other end's opening and then touches the tube from inside, a
+// contact this search does not follow.
 EndContact smallest_contact(const SpineTable& table, double e, double lo, double hi) {
   const NurbsCurve3d& spine = table.spine();
   const auto d = spine.derivatives(e, 1);

@@ -2,7 +2,10 @@
 // theorem after (8.46); Maekawa, Patrikalakis, Sakkalis & Yu 1998): a pipe of radius r is
 // nonsingular iff r < δ = min{1/κ_max, r_ee, r_bb, r_eb} — the local bound, the radius at which the
 // two end circles meet, half the shortest double normal of the spine (body–body), and the radius at
-// which an end circle touches the tube around the rest of the spine (end–body).
+// which an end circle touches the tube around the rest of the spine (end–body). Nonsingular is
+// meant of the open pipe surface: the tube around the body may come within r of an end point
+// beyond the pipe's open end below δ (every point of the pipe is then not at distance r from the
+// spine, yet the surface does not meet itself).
 #pragma once
 
 #include <string>
