@@ -21,12 +21,13 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // 0/0 limit: the circle sits on the tube by construction, and |v⊥| is lost in rounding, so
 // the end's neighbourhood is left out rather than evaluated.
 
-// g(t) = |v|² / (2|v⊥|), the radius at which the end circle at C(e) reaches the tube around C(t).
+// g(t) = |v|² / (2|v⊥|), the radius at which the end circle at C(e) reaches the tube around C(t);
+// infinite when v⊥ is at rounding level (|v⊥| ≤ 1e-12 |v|: C(t) on the line of the end tangent).
 double contact_radius(const Eigen::Vector3d& end, const Eigen::Vector3d& unit_tangent,
                       const Eigen::Vector3d& at) {
   const Eigen::Vector3d v = at - end;
   const double normal = (v - v.dot(unit_tangent) * unit_tangent).norm();
-  return normal > 0.0 ? v.squaredNorm() / (2.0 * normal) : kInf;
+  return normal > 1e-12 * v.norm() ? v.squaredNorm() / (2.0 * normal) : kInf;
 }
 
 // The smallest interior local minimum of g on (lo, hi): sampled at the table nodes, refined by

@@ -113,7 +113,7 @@ TEST(PipeBounds, USpineBodyBodyAndLocalAreTheBendRadius) {
   EXPECT_NEAR(b.body_body, d, 1e-9);  // the legs' double normals have length 2d
   EXPECT_NEAR(b.end_end, d, 1e-9);    // coplanar end circles 2d apart
   // Each end circle reaches the other leg only at its end point, beyond the open end: no contact.
-  EXPECT_GT(b.end_body, 1.1 * d);
+  EXPECT_EQ(b.end_body, kInf);
   EXPECT_NEAR(b.delta, d, 1e-9);
   EXPECT_EQ(b.limiting_mode, "local");
 }
