@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include "src/error.h"
 #include "src/io/spine_csv.h"
@@ -68,7 +69,10 @@ PipeJobResult run_pipe_job(const std::filesystem::path& file, const PipeJobOptio
     r.warnings.push_back(what);
   }
   r.tolerance = o.tolerance > 0 ? o.tolerance : 1e-4 * size;
-  r.pipe = pipe_surface(r.spine, o.radius, o.frame, r.tolerance);
+  // A self-intersecting pipe folds into cusps no skinning follows to a tolerance: it is skinned
+  // once (a station per knot span) and its measured deviation reported.
+  r.pipe = pipe_surface(r.spine, o.radius, o.frame,
+                        r.nonsingular ? r.tolerance : std::numeric_limits<double>::max());
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
 }
