@@ -5,6 +5,7 @@
 #include <string>
 
 #include "src/error.h"
+#include "src/fit/point_subset.h"
 #include "src/number_text.h"
 #include "src/nurbs/coons_surface.h"
 
@@ -17,19 +18,6 @@ double seconds(std::chrono::steady_clock::time_point& t0) {
   const double s = std::chrono::duration<double>(t1 - t0).count();
   t0 = t1;
   return s;
-}
-
-Eigen::Matrix3Xd columns(const Eigen::Matrix3Xd& m, const std::vector<int>& idx) {
-  Eigen::Matrix3Xd out(3, static_cast<Eigen::Index>(idx.size()));
-  for (std::size_t k = 0; k < idx.size(); ++k)
-    out.col(static_cast<Eigen::Index>(k)) = m.col(idx[k]);
-  return out;
-}
-
-Eigen::VectorXd entries(const Eigen::VectorXd& x, const std::vector<int>& idx) {
-  Eigen::VectorXd out(static_cast<Eigen::Index>(idx.size()));
-  for (std::size_t k = 0; k < idx.size(); ++k) out[static_cast<Eigen::Index>(k)] = x[idx[k]];
-  return out;
 }
 
 }  // namespace
@@ -90,10 +78,10 @@ PatchFit fit_patch(const Eigen::Matrix3Xd& points, const PatchBoundary& boundary
   // A thinned set leaves some control points without data: a trace of thin-plate energy keeps
   // the system well posed without pulling on the points (as the tensor base does).
   if (o.thin > 0) f.smoothing = 1e-9;
-  const Eigen::Matrix3Xd fitted = kept.empty() ? Eigen::Matrix3Xd() : columns(points, kept);
+  const Eigen::Matrix3Xd fitted = kept.empty() ? Eigen::Matrix3Xd() : select_columns(points, kept);
   const Eigen::Matrix3Xd& q = kept.empty() ? points : fitted;
-  const Eigen::VectorXd qu = kept.empty() ? r.parameters.u : entries(r.parameters.u, kept);
-  const Eigen::VectorXd qv = kept.empty() ? r.parameters.v : entries(r.parameters.v, kept);
+  const Eigen::VectorXd qu = kept.empty() ? r.parameters.u : select_entries(r.parameters.u, kept);
+  const Eigen::VectorXd qv = kept.empty() ? r.parameters.v : select_entries(r.parameters.v, kept);
   try {
     if (o.control_u == 0 && o.control_v == 0 && !(o.tolerance > 0)) {
       r.net = select_surface_net(q, qu, qv, f);

@@ -13,8 +13,10 @@
 #include "export/svg_plot.h"
 #include "export/x3d_writer.h"
 #include "jobs/patch/patch_plots.h"
+#include "jobs/report/deviation_ply.h"
 #include "jobs/report/output_files.h"
 #include "polarform_version.h"
+#include "src/fit/point_subset.h"
 #include "src/number_text.h"
 
 namespace polarform {
@@ -220,21 +222,12 @@ std::vector<std::string> write_patch_outputs(const PatchJobResult& r,
   std::sort(files.begin(), files.end());
   content["report.html"] = html_report(r, decomposition_svg, preview_svg, files);
   content["report.json"] = report_json_text(patch_report_json(r, files));
-  const double limit = std::max(p.error.p99, 1e-9);
-  std::vector<std::array<unsigned char, 3>> colors(static_cast<std::size_t>(p.distances.size()));
-  std::vector<double> deviation(colors.size());
-  for (Eigen::Index k = 0; k < p.distances.size(); ++k) {
-    colors[static_cast<std::size_t>(k)] = to_rgb8(diverging_color(p.distances[k], limit));
-    deviation[static_cast<std::size_t>(k)] = p.distances[k];
-  }
   OutputTransaction outputs(dir);  // all or nothing
   for (const auto& [name, text] : content) outputs.add(name, text);
-  outputs.add("deviation.ply",
-              ply_writer(dir / "deviation.ply", r.points, &colors, &deviation, "deviation"));
-  Eigen::Matrix3Xd kept(3, p.thinning ? static_cast<Eigen::Index>(p.thinning->kept.size()) : 0);
-  for (Eigen::Index k = 0; k < kept.cols(); ++k)  // outlives the transaction's writer
-    kept.col(k) = r.points.col(p.thinning->kept[static_cast<std::size_t>(k)]);
-  if (p.thinning) outputs.add("thinned.ply", ply_writer(dir / "thinned.ply", kept));
+  add_deviation_ply(outputs, dir, r.points, p.distances, p.error.p99);
+  if (p.thinning)
+    outputs.add("thinned.ply",
+                ply_writer(dir / "thinned.ply", select_columns(r.points, p.thinning->kept)));
   if (r.interrogation) add_interrogation_files(outputs, dir, *r.interrogation, title);
   outputs.commit();
   return files;

@@ -14,6 +14,7 @@
 #include "export/step_writer.h"
 #include "export/svg_plot.h"
 #include "export/x3d_writer.h"
+#include "jobs/report/deviation_ply.h"
 #include "jobs/report/output_files.h"
 #include "jobs/sweep/sweep_plots.h"
 #include "polarform_version.h"
@@ -168,17 +169,9 @@ std::vector<std::string> write_sweep_outputs(const SweepJobResult& r,
   std::sort(files.begin(), files.end());
   content["report.html"] = html_report(r, profile_svg, preview_svg, files);
   content["report.json"] = report_json_text(sweep_report_json(r, files));
-  const double limit = std::max(v.error.p99, 1e-9);
-  std::vector<std::array<unsigned char, 3>> colors(static_cast<std::size_t>(v.distances.size()));
-  std::vector<double> deviation(colors.size());
-  for (Eigen::Index k = 0; k < v.distances.size(); ++k) {
-    colors[static_cast<std::size_t>(k)] = to_rgb8(diverging_color(v.distances[k], limit));
-    deviation[static_cast<std::size_t>(k)] = v.distances[k];
-  }
   OutputTransaction outputs(dir);  // all or nothing
   for (const auto& [name, text] : content) outputs.add(name, text);
-  outputs.add("deviation.ply",
-              ply_writer(dir / "deviation.ply", r.points, &colors, &deviation, "deviation"));
+  add_deviation_ply(outputs, dir, r.points, v.distances, v.error.p99);
   if (r.interrogation) add_interrogation_files(outputs, dir, *r.interrogation, title);
   outputs.commit();
   return files;

@@ -9,6 +9,7 @@
 #include "src/error.h"
 #include "src/fit/bicubic_coons_fit.h"
 #include "src/fit/parallel.h"
+#include "src/fit/point_subset.h"
 #include "src/fit/surface_fit.h"
 #include "src/nurbs/coons_surface.h"
 #include "src/nurbs/point_inversion.h"
@@ -27,19 +28,6 @@ std::vector<int> random_share(int n, double share, int minimum) {
   all.resize(static_cast<std::size_t>(k));
   std::sort(all.begin(), all.end());
   return all;
-}
-
-Eigen::Matrix3Xd columns(const Eigen::Matrix3Xd& m, const std::vector<int>& idx) {
-  Eigen::Matrix3Xd out(3, static_cast<Eigen::Index>(idx.size()));
-  for (std::size_t k = 0; k < idx.size(); ++k)
-    out.col(static_cast<Eigen::Index>(k)) = m.col(idx[k]);
-  return out;
-}
-
-Eigen::VectorXd entries(const Eigen::VectorXd& x, const std::vector<int>& idx) {
-  Eigen::VectorXd out(static_cast<Eigen::Index>(idx.size()));
-  for (std::size_t k = 0; k < idx.size(); ++k) out[static_cast<Eigen::Index>(k)] = x[idx[k]];
-  return out;
 }
 
 void measure(BaseSurface& b, const Eigen::Matrix3Xd& points, const Eigen::VectorXd& u,
@@ -106,8 +94,8 @@ BaseSurface build_base_surface(const PatchBoundary& boundary, const Eigen::Matri
     return b;
   }
   const std::vector<int> share = random_share(n, o.share, std::min(n, 64));
-  const Eigen::Matrix3Xd q = columns(points, share);
-  const Eigen::VectorXd su = entries(u, share), sv = entries(v, share);
+  const Eigen::Matrix3Xd q = select_columns(points, share);
+  const Eigen::VectorXd su = select_entries(u, share), sv = select_entries(v, share);
   b.fitted_points = static_cast<int>(share.size());
   if (o.kind == BaseKind::tensor) {
     SurfaceFitOptions f;

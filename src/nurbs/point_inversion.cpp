@@ -25,13 +25,15 @@ std::vector<std::pair<double, double>> spans(const Knots& knots, int degree, int
 // f'(u) = |C'|² + C''·(C − P); NURBS Book §6.1, eqs. (6.3)–(6.4).
 struct CurveSample {
   double t, f, df, d2;
+  double rounding;  // the rounding level of f: 64 ε |C'| (|C| + |P|)
 };
 
 template <int D>
 CurveSample curve_sample(const NurbsCurve<D>& c, const Eigen::Matrix<double, D, 1>& p, double t) {
   const auto d = c.derivatives(t, 2);
   const Eigen::Matrix<double, D, 1> r = d[0] - p;
-  return {t, d[1].dot(r), d[1].squaredNorm() + d[2].dot(r), r.squaredNorm()};
+  return {t, d[1].dot(r), d[1].squaredNorm() + d[2].dot(r), r.squaredNorm(),
+          64.0 * kEps * d[1].norm() * (d[0].norm() + p.norm())};
 }
 
 // On the span [a, a + h], with C = A/w and t = (u − a)/h, f·w³·h = N(t) = (A_t w − A w_t)·(A − P w),
@@ -104,7 +106,9 @@ CurveProjection closest_point(const NurbsCurve<D>& c, const Eigen::Matrix<double
       const double lo = a + (b - a) * t0, hi = t1 < 1.0 ? a + (b - a) * t1 : std::nextafter(b, a);
       const CurveSample s0 = curve_sample(c, p, lo), s1 = curve_sample(c, p, hi);
       if (s0.f < 0.0 && s1.f > 0.0) roots.push_back(safe_newton(c, p, lo, hi));
-      if (s0.f == 0.0) roots.push_back(lo);
+      // A root on a subdivision point need not bracket in floating point (f there is rounding).
+      if (std::abs(s0.f) <= s0.rounding) roots.push_back(lo);
+      if (std::abs(s1.f) <= s1.rounding) roots.push_back(hi);
     }
   }
   candidates.push_back(c.back());
