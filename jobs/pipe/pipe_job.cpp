@@ -22,6 +22,16 @@ NurbsCurve3d spine_through(const Eigen::Matrix3Xd& p, bool closed) {
     const Eigen::Vector3d d = (p.col(1) - p.col(n - 2)) / (t[1] + t[n - 1] - t[n - 2]);
     ends.start_tangent = d;
     ends.end_tangent = d;
+  } else if (n >= 3) {
+    // Bessel ends: the tangents of the parabolas through the first and the last three points
+    // (natural ends would straighten the spine there and overshoot its curvature nearby).
+    const auto slope = [&](Eigen::Index a, Eigen::Index b) -> Eigen::Vector3d {
+      return (p.col(b) - p.col(a)) / (t[b] - t[a]);
+    };
+    const Eigen::Vector3d s01 = slope(0, 1), s12 = slope(1, 2);
+    ends.start_tangent = Eigen::Vector3d(s01 - (t[1] - t[0]) * (s12 - s01) / (t[2] - t[0]));
+    const Eigen::Vector3d a = slope(n - 3, n - 2), b = slope(n - 2, n - 1);
+    ends.end_tangent = Eigen::Vector3d(b + (t[n - 1] - t[n - 2]) * (b - a) / (t[n - 1] - t[n - 3]));
   }
   const BSpline s = interpolate_cubic(p, t, ends);
   NurbsCurve3d::Points ctrl;

@@ -40,9 +40,9 @@ struct PipeJobResult {
   double seconds = 0.0;
 };
 
-// The cubic spline through the points at chord-length parameters: natural ends when open; when
-// closed (the last point repeats the first) both ends get the same tangent, so the spine is C1 at
-// the seam.
+// The cubic spline through the points at chord-length parameters: open, its end tangents those of
+// the parabolas through the first and last three points (Bessel; two points: a line); closed (the
+// last point repeats the first), both ends get the same tangent, so the spine is C1 at the seam.
 NurbsCurve3d spine_through(const Eigen::Matrix3Xd& points, bool closed);
 
 // Throws InputError for a bad file or options, and for a radius at or beyond the bound δ (an
