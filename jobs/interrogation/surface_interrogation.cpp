@@ -46,6 +46,48 @@ void min_max(const std::vector<double>& v, double& lo, double& hi, bool& first) 
   }
 }
 
+struct AreaByClass {
+  double elliptic = 0, hyperbolic = 0, parabolic = 0;
+};
+
+// -1, 0, +1: hyperbolic, parabolic (|K| <= threshold, or no normal), elliptic.
+int curvature_class(const NurbsSurface& s, double u, double v, double threshold) {
+  const double k = surface_curvature(s, u, v).gaussian;
+  return k > threshold ? 1 : k < -threshold ? -1 : 0;
+}
+
+// The area of a parameter rectangle by 2 × 2 Gauss–Legendre on |S_u × S_v|.
+double cell_area(const NurbsSurface& s, double u0, double u1, double v0, double v1) {
+  const double g = 0.5 / std::sqrt(3.0);
+  double a = 0;
+  for (const double su : {0.5 - g, 0.5 + g})
+    for (const double sv : {0.5 - g, 0.5 + g}) {
+      const NurbsSurface::Points d = s.derivatives(u0 + su * (u1 - u0), v0 + sv * (v1 - v0), 1);
+      a += 0.25 * d[2].cross(d[1]).norm();
+    }
+  return a * (u1 - u0) * (v1 - v0);
+}
+
+// A cell whose corners and centre agree on the class of K is all of that class; a mixed one is
+// quartered, down to `depth` levels, where its centre decides: the K = 0 curves are followed to
+// 2^-depth of a cell.
+void classify_area(const NurbsSurface& s, double u0, double u1, double v0, double v1,
+                   double threshold, int depth, AreaByClass& out) {
+  const double um = 0.5 * (u0 + u1), vm = 0.5 * (v0 + v1);
+  const int c = curvature_class(s, um, vm, threshold);
+  bool same = true;
+  for (const double u : {u0, u1})
+    for (const double v : {v0, v1}) same = same && curvature_class(s, u, v, threshold) == c;
+  if (same || depth == 0) {
+    (c > 0 ? out.elliptic : c < 0 ? out.hyperbolic : out.parabolic) += cell_area(s, u0, u1, v0, v1);
+    return;
+  }
+  classify_area(s, u0, um, v0, vm, threshold, depth - 1, out);
+  classify_area(s, um, u1, v0, vm, threshold, depth - 1, out);
+  classify_area(s, u0, um, vm, v1, threshold, depth - 1, out);
+  classify_area(s, um, u1, vm, v1, threshold, depth - 1, out);
+}
+
 // Lights from the surfaces' vertices: the plane above them along the mean normal, the lines along
 // the direction of largest spread across it, 20 stripes over the size, seen from above.
 ReflectionLights choose_lights(const std::vector<InterrogatedSurface>& all) {
@@ -121,23 +163,15 @@ SurfaceInterrogation interrogate_surfaces(const std::vector<NurbsSurface>& surfa
     min_max(s.absolute, q.min_absolute, q.max_absolute, fa);
   }
   const double parabolic = 1e-9 * std::max(std::abs(q.min_gaussian), std::abs(q.max_gaussian));
-  double elliptic = 0, hyperbolic = 0;
+  AreaByClass areas;
   for (InterrogatedSurface& s : q.surfaces) {
     const std::size_t nv = s.v.size();
     for (std::size_t i = 0; i + 1 < s.u.size(); ++i)
-      for (std::size_t j = 0; j + 1 < nv; ++j) {
-        // Midpoint rule on the cell: |S_u × S_v| du dv at its centre, classified by K there.
-        const double uc = 0.5 * (s.u[i] + s.u[i + 1]), vc = 0.5 * (s.v[j] + s.v[j + 1]);
-        const NurbsSurface::Points d = s.surface.derivatives(uc, vc, 1);
-        const double area = d[2].cross(d[1]).norm() * (s.u[i + 1] - s.u[i]) * (s.v[j + 1] - s.v[j]);
-        const double k = surface_curvature(s.surface, uc, vc).gaussian;
-        q.area += area;
-        if (k > parabolic)
-          elliptic += area;
-        else if (k < -parabolic)
-          hyperbolic += area;
-      }
+      for (std::size_t j = 0; j + 1 < nv; ++j)
+        classify_area(s.surface, s.u[i], s.u[i + 1], s.v[j], s.v[j + 1], parabolic, 6, areas);
   }
+  q.area = areas.elliptic + areas.hyperbolic + areas.parabolic;
+  const double elliptic = areas.elliptic, hyperbolic = areas.hyperbolic;
   if (q.area > 0) {
     q.elliptic_area_fraction = elliptic / q.area;
     q.hyperbolic_area_fraction = hyperbolic / q.area;

@@ -33,7 +33,8 @@ struct SurfaceInterrogation {
   std::vector<InterrogatedSurface> surfaces;
   double min_gaussian = 0, max_gaussian = 0, min_mean = 0, max_mean = 0, min_absolute = 0,
          max_absolute = 0;
-  // Of the total area (quads classified by K at their centre; |K| <= 1e-9·max|K| is parabolic).
+  // Of the total area (tessellation cells classified by K at corners and centre, mixed ones
+  // quartered 6 levels deep; |K| <= 1e-9·max|K| is parabolic).
   double elliptic_area_fraction = 0, hyperbolic_area_fraction = 0, parabolic_area_fraction = 0;
   double area = 0;  // mm²
   ReflectionLights lights;

@@ -68,7 +68,7 @@ TEST(SurfaceInterrogation, BulgeAndWaistFollowTheProfile) {
     if (z > 40) waist += a;
   }
   EXPECT_NEAR(q.area, all, 1e-4 * all);
-  EXPECT_NEAR(q.hyperbolic_area_fraction, waist / all, 0.01);
+  EXPECT_NEAR(q.hyperbolic_area_fraction, waist / all, 2e-4);
   EXPECT_GT(q.max_gaussian, 0.0);
   EXPECT_LT(q.min_gaussian, 0.0);
 }
