@@ -64,7 +64,9 @@ TEST(DerivativeJumps, CubicBasisFunctionClosedForm) {
                 1e-12 * expected[k])
         << k;
   for (const SplineKnotJump& j : jumps)
-    if (j.u < 3 * h - 1e-12 || j.u > 7 * h + 1e-12) EXPECT_EQ(j.jump, 0.0) << j.u;
+    if (j.u < 3 * h - 1e-12 || j.u > 7 * h + 1e-12) {
+      EXPECT_EQ(j.jump, 0.0) << j.u;
+    }
 }
 
 TEST(FarinFairing, OneStepRemovesTheJumpWithinItsBoundAndIsLocal) {
@@ -79,10 +81,13 @@ TEST(FarinFairing, OneStepRemovesTheJumpWithinItsBoundAndIsLocal) {
   // Knot u = t_9 is U[r] with r = 3 + 9: only P_{r−3}..P_{r−1} move, the others bit for bit.
   const int r = 12;
   for (int i = 0; i < R.size(); ++i)
-    if (i < r - 3 || i > r - 1) EXPECT_EQ(R.coefs().col(i), F.coefs().col(i)) << i;
+    if (i < r - 3 || i > r - 1) {
+      EXPECT_EQ(R.coefs().col(i), F.coefs().col(i)) << i;
+    }
   for (int k = 1; k < 18; ++k)
-    if (std::abs(k - 9) > 3)
+    if (std::abs(k - 9) > 3) {
       EXPECT_NEAR(jump_at(F, b.t[k]), jump_at(R, b.t[k]), 1e-12 * before) << k;
+    }
   // The bump: R(t_9) was 0.1 off the circle; faired, less than half of it is left.
   EXPECT_LT(std::abs(F.point(u).norm() - 10.0), 0.05);
 }
@@ -135,7 +140,9 @@ TEST(KjellanderFairing, RestoresTheBumpedPointAndLeavesTheOthers) {
   ASSERT_EQ(f.steps.size(), 1u);
   EXPECT_EQ(f.steps[0].u, b.t[9]);  // the worst jump is at the disturbed point
   for (int k = 0; k < 19; ++k)
-    if (k != 9) EXPECT_LT((f.spline.point(b.t[k]) - b.points.col(k)).norm(), 1e-13 * 10) << k;
+    if (k != 9) {
+      EXPECT_LT((f.spline.point(b.t[k]) - b.points.col(k)).norm(), 1e-13 * 10) << k;
+    }
   const double bump_after = std::abs(f.values.col(9).norm() - 10.0);
   EXPECT_LE(bump_after, 0.5 * 0.1);
   EXPECT_LE(f.steps[0].jump_after, 0.5 * f.steps[0].jump_before);
