@@ -76,8 +76,9 @@ TEST(OscillatingRoller, PivotArmAndSwingFollowTheDefinition) {
       const double turned = std::atan2(perp(Vector2d(0, 50) - p).dot(fixed - p),
                                        (Vector2d(0, 50) - p).dot(fixed - p));
       EXPECT_NEAR(std::abs(turned) * 180 / pi, cam.program()(theta), 1e-9) << theta;
-      if (cam.program()(theta) > 1e-6)
+      if (cam.program()(theta) > 1e-6) {
         EXPECT_GT(fixed.norm(), 50.0);  // the swing moves away from the cam
+      }
     }
   }
 }
@@ -171,7 +172,9 @@ TEST(OscillatingRoller, AVeryLongArmApproachesTheTranslatingFollower) {
     }
     EXPECT_LT(gap, 3 * stroke * stroke / l) << l;
     EXPECT_LT(pressure, 30 * stroke / l) << l;
-    if (previous > 0) EXPECT_LT(gap, previous / 5);
+    if (previous > 0) {
+      EXPECT_LT(gap, previous / 5);
+    }
     previous = gap;
   }
 }

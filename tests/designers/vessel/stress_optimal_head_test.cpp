@@ -75,8 +75,9 @@ TEST(StressOptimalHead, NeverAboveTheEllipseOfItsDepth) {
         "designed", head_polar_function(minimum_peak_stress_head(a, depth).profile), load);
     const double ellipse = standard_heads_of_depth(depth, load).references[0].peak_stress;
     EXPECT_LE(designed.peak_stress, ellipse * (1 + 1e-6)) << depth;
-    if (share == 1.0)
+    if (share == 1.0) {
       EXPECT_NEAR(designed.peak_stress, load.pressure * a / (2 * load.thickness), 1e-6 * ellipse);
+    }
   }
 }
 
