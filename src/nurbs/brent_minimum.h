@@ -15,15 +15,17 @@ struct Minimum {
 };
 
 // The minimum of f on [a, b] to a relative tolerance of sqrt(machine epsilon) in x (the best a
-// smooth minimum allows); Brent 1973, ch. 5 (fmin).
+// smooth minimum allows) plus `absolute` (< 0: 1e-15 of the bracket); Brent 1973, ch. 5 (fmin).
 template <class F>
-Minimum brent_minimum(F&& f, double a, double b) {
+Minimum brent_minimum(F&& f, double a, double b, double absolute = -1.0) {
   constexpr double c = 0.3819660112501051;  // (3 − √5)/2
   const double a0 = a, b0 = b;
   double x = a + c * (b - a), w = x, v = x, d = 0.0, e = 0.0;
   double fx = f(x), fw = fx, fv = fx;
   for (int iter = 0; iter < 200; ++iter) {
-    const double m = 0.5 * (a + b), tol = 1.5e-8 * std::abs(x) + 1e-15 * (b0 - a0), tol2 = 2 * tol;
+    const double m = 0.5 * (a + b),
+                 tol = 1.5e-8 * std::abs(x) + (absolute >= 0 ? absolute : 1e-15 * (b0 - a0)),
+                 tol2 = 2 * tol;
     if (std::abs(x - m) <= tol2 - 0.5 * (b - a)) break;
     double p = 0.0, q = 0.0, r = 0.0;
     if (std::abs(e) > tol) {  // parabola through x, w, v
