@@ -20,6 +20,7 @@
 #include "jobs/cam/cam_plots.h"
 #include "jobs/cam/cam_report.h"
 #include "jobs/report/conversion_report.h"
+#include "jobs/report/exchange_headers.h"
 #include "jobs/report/output_files.h"
 #include "polarform_version.h"
 #include "src/error.h"
@@ -245,10 +246,7 @@ std::map<std::string, std::string> render_cam_outputs(const CamJobResult& r,
   if (o.solid_thickness && !plate) throw InputError("--solid applies to plate cams only");
   std::map<std::string, std::string> content;
   const std::string stem = plate ? "profile" : "track";
-  IgesHeader iges;
-  iges.description = "polarform " + std::string(POLARFORM_VERSION) + " cam " + o.design_name;
-  StepHeader step;
-  step.description = iges.description;
+  auto [iges, step] = exchange_headers("cam " + o.design_name);
   IgesWriter igs;
   StepWriter stp(o.design_name);
   X3dWriter x3d;

@@ -16,6 +16,7 @@
 #include "jobs/fit/fit_plots.h"
 #include "jobs/fit/profile_curvature_figure.h"
 #include "jobs/fit/profile_interrogation.h"
+#include "jobs/report/exchange_headers.h"
 #include "jobs/report/output_files.h"
 #include "polarform_version.h"
 #include "src/error.h"
@@ -294,12 +295,8 @@ std::map<std::string, std::string> render_fit_outputs(const FitJobResult& r) {
   const ProfileFit* profile = std::get_if<ProfileFit>(&r.fit);
   const std::string stem = profile ? "curve" : "surface";
   const std::string name = r.input.stem().string();
-  IgesHeader iges;
-  iges.description = "polarform " + std::string(POLARFORM_VERSION) + " " + r.method + " fit of " +
-                     r.input.filename().string();
+  auto [iges, step] = exchange_headers(r.method + " fit of " + r.input.filename().string());
   iges.file_name = stem + ".igs";
-  StepHeader step;
-  step.description = iges.description;
   step.file_name = stem + ".stp";
   IgesWriter igs;
   StepWriter stp(name);

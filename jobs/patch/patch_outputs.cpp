@@ -14,6 +14,7 @@
 #include "export/x3d_writer.h"
 #include "jobs/patch/patch_plots.h"
 #include "jobs/report/deviation_ply.h"
+#include "jobs/report/exchange_headers.h"
 #include "jobs/report/output_files.h"
 #include "polarform_version.h"
 #include "src/fit/point_subset.h"
@@ -184,10 +185,7 @@ std::vector<std::string> write_patch_outputs(const PatchJobResult& r,
   const PatchFit& p = r.patch;
   std::map<std::string, std::string> content;
   const std::string title = "polarform patch of " + r.input.filename().string();
-  IgesHeader iges;
-  iges.description = "polarform " + std::string(POLARFORM_VERSION) + " " + title;
-  StepHeader step;
-  step.description = iges.description;
+  auto [iges, step] = exchange_headers(title);
   IgesWriter surface_igs, base_igs;
   surface_igs.add(p.fit.surface, "PATCH");
   base_igs.add(p.base.surface, "BASE");

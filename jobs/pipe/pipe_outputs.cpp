@@ -12,6 +12,7 @@
 #include "export/step_writer.h"
 #include "export/svg_plot.h"
 #include "export/x3d_writer.h"
+#include "jobs/report/exchange_headers.h"
 #include "jobs/report/output_files.h"
 #include "polarform_version.h"
 #include "src/number_text.h"
@@ -109,10 +110,7 @@ std::vector<std::string> write_pipe_outputs(const PipeJobResult& r,
                                             const std::filesystem::path& dir) {
   std::map<std::string, std::string> content;
   const std::string title = "polarform pipe around " + r.input.filename().string();
-  IgesHeader iges;
-  iges.description = "polarform " + std::string(POLARFORM_VERSION) + " " + title;
-  StepHeader step;
-  step.description = iges.description;
+  auto [iges, step] = exchange_headers(title);
   IgesWriter pipe_igs, spine_igs;
   pipe_igs.add(r.pipe.surface, "PIPE");
   spine_igs.add(r.spine, "SPINE");

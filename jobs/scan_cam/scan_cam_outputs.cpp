@@ -15,6 +15,7 @@
 #include "export/x3d_writer.h"
 #include "jobs/fit/profile_curvature_figure.h"
 #include "jobs/fit/profile_interrogation.h"
+#include "jobs/report/exchange_headers.h"
 #include "jobs/report/output_files.h"
 #include "jobs/scan_cam/scan_cam_design_report.h"
 #include "jobs/scan_cam/scan_cam_plots.h"
@@ -290,11 +291,8 @@ std::vector<std::string> write_scan_cam_outputs(const ScanCamJobResult& r,
   std::map<std::string, std::string> content;
   const NurbsCurve2d& curve = r.scan.fit.curve;
   const std::string title = "polarform scan-cam of " + r.input.filename().string();
-  IgesHeader iges;
-  iges.description = "polarform " + std::string(POLARFORM_VERSION) + " " + title;
+  auto [iges, step] = exchange_headers(title);
   iges.file_name = "profile.igs";
-  StepHeader step;
-  step.description = iges.description;
   step.file_name = "profile.stp";
   IgesWriter igs;
   igs.add(curve, "SCANNED CAM PROFILE");

@@ -15,6 +15,7 @@
 #include "export/svg_plot.h"
 #include "export/x3d_writer.h"
 #include "jobs/report/deviation_ply.h"
+#include "jobs/report/exchange_headers.h"
 #include "jobs/report/output_files.h"
 #include "jobs/sweep/sweep_plots.h"
 #include "polarform_version.h"
@@ -133,10 +134,7 @@ std::vector<std::string> write_sweep_outputs(const SweepJobResult& r,
   const RevolutionRecovery& v = r.revolution;
   std::map<std::string, std::string> content;
   const std::string title = "polarform sweep of " + r.input.filename().string();
-  IgesHeader iges;
-  iges.description = "polarform " + std::string(POLARFORM_VERSION) + " " + title;
-  StepHeader step;
-  step.description = iges.description;
+  auto [iges, step] = exchange_headers(title);
   IgesWriter igs, profile_igs;
   StepWriter stp(r.input.stem().string());
   X3dWriter x3d;

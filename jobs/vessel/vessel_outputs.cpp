@@ -14,6 +14,7 @@
 #include "export/step_writer.h"
 #include "export/svg_plot.h"
 #include "jobs/report/conversion_report.h"
+#include "jobs/report/exchange_headers.h"
 #include "jobs/report/output_files.h"
 #include "jobs/vessel/vessel_plots.h"
 #include "jobs/vessel/vessel_report.h"
@@ -217,10 +218,7 @@ std::string html_report(const VesselJobResult& r, const VesselOutputOptions& o, 
 std::map<std::string, std::string> render_vessel_outputs(const VesselJobResult& r,
                                                          const VesselOutputOptions& o) {
   std::map<std::string, std::string> content;
-  IgesHeader iges;
-  iges.description = "polarform " + std::string(POLARFORM_VERSION) + " vessel " + o.design_name;
-  StepHeader step;
-  step.description = iges.description;
+  auto [iges, step] = exchange_headers("vessel " + o.design_name);
   const auto write_iges = [&](const IgesWriter& w, const std::string& name) {
     iges.file_name = name;
     content[name] = w.str(iges);

@@ -10,6 +10,7 @@
 #include "export/step_writer.h"
 #include "export/svg_plot.h"
 #include "export/x3d_field_scene.h"
+#include "jobs/report/exchange_headers.h"
 #include "jobs/report/output_files.h"
 #include "jobs/viz/viz_plots.h"
 #include "polarform_version.h"
@@ -91,11 +92,8 @@ std::vector<std::string> write_viz_outputs(const VizJobResult& r,
                                            const std::filesystem::path& dir) {
   std::map<std::string, std::string> content;
   const std::string title = "polarform viz of " + r.input.filename().string();
-  IgesHeader iges;
-  iges.description = "polarform " + std::string(POLARFORM_VERSION) + " " + title;
+  auto [iges, step] = exchange_headers(title);
   iges.file_name = "surface.igs";
-  StepHeader step;
-  step.description = iges.description;
   step.file_name = "surface.stp";
   IgesWriter igs;
   igs.add(r.field.surface, "FIELD SURFACE");
