@@ -231,7 +231,8 @@ FitJobResult fit_cloud(FitInput in, const FitJobOptions& o) {
                       o.base,
                       o.reject_outliers,
                       std::move(warnings),
-                      in.read_seconds + clock.lap()};
+                      in.read_seconds + clock.lap(),
+                      std::nullopt};
   if (o.interrogate) {
     const RotationalFit& f = std::get<RotationalFit>(result.fit);
     std::vector<NurbsSurface> surfaces{f.surface()};

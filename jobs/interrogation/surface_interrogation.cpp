@@ -106,11 +106,7 @@ ReflectionLights choose_lights(const std::vector<InterrogatedSurface>& all) {
       scatter += (p - centre) * (p - centre).transpose();
       size = std::max(size, (p - centre).norm());
     }
-    for (std::size_t i = 0; i < s.u.size(); ++i)
-      for (std::size_t j = 0; j < s.v.size(); ++j) {
-        const Eigen::Vector3d nn = s.surface.normal(s.u[i], s.v[j]);
-        if (nn.allFinite()) mean_normal += nn;
-      }
+    for (const Eigen::Vector3d& nn : s.normals) mean_normal += nn;
   }
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(scatter);
   Eigen::Vector3d m = mean_normal.norm() > 1e-9 * static_cast<double>(n)
@@ -147,6 +143,7 @@ SurfaceInterrogation interrogate_surfaces(const std::vector<NurbsSurface>& surfa
     is.u = t.u;
     is.v = t.v;
     is.points = t.points;
+    is.normals = t.normals;
     for (std::size_t i = 0; i < t.u.size(); ++i)
       for (std::size_t j = 0; j < t.v.size(); ++j) {
         const SurfaceCurvature c = surface_curvature(s, t.u[i], t.v[j]);
@@ -179,13 +176,8 @@ SurfaceInterrogation interrogate_surfaces(const std::vector<NurbsSurface>& surfa
   }
   q.lights = choose_lights(q.surfaces);
   for (InterrogatedSurface& s : q.surfaces)
-    for (std::size_t i = 0; i < s.u.size(); ++i)
-      for (std::size_t j = 0; j < s.v.size(); ++j) {
-        const Eigen::Vector3d n = s.surface.normal(s.u[i], s.v[j]);
-        s.reflection.push_back(
-            n.norm() > 0.5 ? reflection_line_value(s.points[i * s.v.size() + j], n, q.lights)
-                           : kNaN);
-      }
+    for (std::size_t k = 0; k < s.points.size(); ++k)
+      s.reflection.push_back(reflection_line_value(s.points[k], s.normals[k], q.lights));
   return q;
 }
 

@@ -25,6 +25,7 @@ struct InterrogatedSurface {
   NurbsSurface surface;
   std::vector<double> u, v;             // tessellation parameters (tessellation.h)
   std::vector<Eigen::Vector3d> points;  // at (u[i], v[j]), index i·v.size() + j
+  std::vector<Eigen::Vector3d> normals;  // unit, a pole's from its neighbours (tessellation.h)
   std::vector<double> gaussian, mean, absolute, reflection;  // NaN where degenerate / unlit
 };
 
