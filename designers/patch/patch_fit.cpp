@@ -1,5 +1,6 @@
 #include "designers/patch/patch_fit.h"
 
+#include <Eigen/Geometry>
 #include <chrono>
 #include <cmath>
 #include <string>
@@ -8,6 +9,7 @@
 #include "src/fit/point_subset.h"
 #include "src/number_text.h"
 #include "src/nurbs/coons_surface.h"
+#include "src/nurbs/surface_jet.h"
 
 namespace polarform {
 
@@ -119,8 +121,8 @@ PatchFit fit_patch(const Eigen::Matrix3Xd& points, const PatchBoundary& boundary
   const auto n = static_cast<std::size_t>(d.size());
   parallel_chunks(n, worker_count(o.threads, n, 5000), [&](std::size_t b, std::size_t e, int) {
     for (auto k = static_cast<Eigen::Index>(b); k < static_cast<Eigen::Index>(e); ++k) {
-      const Eigen::Vector3d off = points.col(k) - r.fit.surface.point(r.u[k], r.v[k]);
-      r.distances[k] = off.dot(r.fit.surface.normal(r.u[k], r.v[k])) < 0 ? -d[k] : d[k];
+      const SurfaceJet j = surface_jet(r.fit.surface, r.u[k], r.v[k]);  // one evaluation
+      r.distances[k] = (points.col(k) - j.s).dot(j.su.cross(j.sv)) < 0 ? -d[k] : d[k];
     }
   });
   r.error = error_stats(r.distances);
