@@ -4,6 +4,8 @@
 // \X2\ encoding, reals with a decimal point, references, logicals, lists).
 #pragma once
 
+#include <Eigen/Geometry>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -28,6 +30,9 @@ class StepFile {
   int size() const { return static_cast<int>(records_.size()); }
   // The whole exchange file. Throws InputError for a malformed header field.
   std::string str(const StepHeader& header) const;
+  // While set, step_point and step_direction (step_geometry.h) write placement·p and
+  // placement.linear()·d: geometry built in a local frame lands rigidly moved in the file.
+  std::optional<Eigen::Isometry3d> placement;
 
  private:
   std::vector<std::string> records_;

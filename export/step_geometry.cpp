@@ -38,11 +38,13 @@ std::string closed_logical(const NurbsCurve3d& c, double tolerance) {
 }  // namespace
 
 int step_point(StepFile& f, const Eigen::Vector3d& p) {
-  return f.add("CARTESIAN_POINT(''," + reals(p) + ")");
+  return f.add("CARTESIAN_POINT(''," + reals(f.placement ? Eigen::Vector3d(*f.placement * p) : p) +
+               ")");
 }
 
 int step_direction(StepFile& f, const Eigen::Vector3d& d) {
-  return f.add("DIRECTION(''," + reals(d) + ")");
+  return f.add("DIRECTION(''," +
+               reals(f.placement ? Eigen::Vector3d(f.placement->linear() * d) : d) + ")");
 }
 
 int step_axis2(StepFile& f, const Eigen::Vector3d& origin, const Eigen::Vector3d& z,

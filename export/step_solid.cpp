@@ -13,7 +13,8 @@ namespace polarform {
 
 std::string step_extruded_solid(const NurbsCurve2d& closed_profile, double thickness,
                                 std::optional<double> bore_diameter, const std::string& name,
-                                const StepHeader& header) {
+                                const StepHeader& header,
+                                const std::optional<Eigen::Isometry3d>& placement) {
   const double tol = header.resolution;
   if (!(thickness > 0.0) || !std::isfinite(thickness))
     throw InputError("STEP solid thickness " + std::to_string(thickness) +
@@ -37,6 +38,7 @@ std::string step_extruded_solid(const NurbsCurve2d& closed_profile, double thick
   StepFile f;
   StepTopology topo(f, tol);
   const int context = step_context(f, tol);
+  f.placement = placement;  // the faces' geometry only, not the representation's origin
   const Eigen::Vector3d z = Eigen::Vector3d::UnitZ(), x = Eigen::Vector3d::UnitX();
 
   // The side face and, with a bore, the bore face (its normal towards the axis).
@@ -55,7 +57,7 @@ std::string step_extruded_solid(const NurbsCurve2d& closed_profile, double thick
   const int top_plane = step_plane(f, step_axis2(f, thickness * z, z, x));
   faces.push_back(step_ref(topo.face(bottom_bounds, bottom_plane, false)));
   faces.push_back(step_ref(topo.face(top_bounds, top_plane, true)));
-
+  f.placement.reset();
   return step_solid_file(f, context, faces, name, header);
 }
 

@@ -11,8 +11,7 @@
 
 #include "designers/sweep/recovery_steps.h"
 #include "src/error.h"
-#include "src/fit/grid_index.h"
-#include "src/fit/parallel.h"
+#include "src/fit/local_normals.h"
 #include "src/fit/polar_curve_fit.h"
 #include "src/fit/rotation_axis.h"
 #include "src/nurbs/extrusion.h"
@@ -21,17 +20,10 @@ namespace polarform {
 
 namespace {
 
-// Kantz §5.2.1 step 2: every point projected along d onto the plane through c.
-Eigen::Matrix2Xd project(const Eigen::Matrix3Xd& P, const Eigen::Vector3d& c,
-                         const Eigen::Vector3d& e1, const Eigen::Vector3d& e2) {
-  Eigen::Matrix<double, 2, 3> B;
-  B.row(0) = e1.transpose();
-  B.row(1) = e2.transpose();
-  return B * (P.colwise() - c);
-}
-
 // The section: one closed loop by the polar fit about the origin when rays from it cross the band
-// once (Bae 2002, ch. 2; spec K10 step 3), else the loops of the MLS-thinned band (spec K7).
+// once (Bae 2002, ch. 2; spec K10 step 3), else the loops of the MLS-thinned band (spec K7). A band
+// the polar fit cannot bring within the tolerance (noise, or a direction still off while it is
+// refined) gets the largest net the fit allows, its tolerance marked as not met.
 MeridianProfile section_loops(const Eigen::Matrix2Xd& q, const MeridianOptions& mo) {
   PolarFitOptions po;
   po.centre = Eigen::Vector2d::Zero();
@@ -40,8 +32,8 @@ MeridianProfile section_loops(const Eigen::Matrix2Xd& q, const MeridianOptions& 
   po.function.threads = mo.threads;
   po.closure = Closure::closed;
   po.outliers = OutlierPolicy::keep;
-  try {
-    const PolarCurveFit f = fit_polar_curve(q, po);
+  auto polar = [&](const PolarFitOptions& options) {
+    const PolarCurveFit f = fit_polar_curve(q, options);
     MeridianProfile p;
     p.size = (q.rowwise().maxCoeff() - q.rowwise().minCoeff()).norm();
     p.tolerance = mo.tolerance;
@@ -54,6 +46,13 @@ MeridianProfile section_loops(const Eigen::Matrix2Xd& q, const MeridianOptions& 
     l.tolerance_met = l.fit_max <= mo.tolerance;
     p.loops.push_back(std::move(l));
     return p;
+  };
+  try {
+    return polar(po);
+  } catch (const NumericalError&) {
+    po.function.size_v = po.function.max_size_v;
+    po.function.tolerance = 0.0;
+    return polar(po);
   } catch (const InputError&) {
     return recover_meridian_profile(q, mo);
   }
@@ -61,32 +60,13 @@ MeridianProfile section_loops(const Eigen::Matrix2Xd& q, const MeridianOptions& 
 
 }  // namespace
 
-// Hoppe et al. 1992 normals; the extrusion direction minimises Σ ⟨n, d⟩² (an eigenproblem).
-Eigen::Vector3d normals_direction(const Eigen::Matrix3Xd& P, int k, const Eigen::Vector3d& hint,
-                                  int threads) {
-  const GridIndex3d grid(P);
-  const int chunks = worker_count(threads, static_cast<std::size_t>(P.cols()));
-  std::vector<Eigen::Matrix3d> sums(static_cast<std::size_t>(chunks), Eigen::Matrix3d::Zero());
-  parallel_chunks(static_cast<std::size_t>(P.cols()), chunks,
-                  [&](std::size_t b, std::size_t e, int w) {
-                    std::vector<int> near;
-                    for (std::size_t i = b; i < e; ++i) {
-                      grid.nearest(P.col(static_cast<Eigen::Index>(i)), k, near);
-                      if (near.size() < 3) continue;
-                      Eigen::Vector3d m = Eigen::Vector3d::Zero();
-                      for (int j : near) m += P.col(j);
-                      m /= static_cast<double>(near.size());
-                      Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
-                      for (int j : near) C += (P.col(j) - m) * (P.col(j) - m).transpose();
-                      const Eigen::Vector3d n =
-                          Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(C).eigenvectors().col(0);
-                      sums[static_cast<std::size_t>(w)] += n * n.transpose();
-                    }
-                  });
-  Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
-  for (const Eigen::Matrix3d& s : sums) M += s;
-  Eigen::Vector3d d = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(M).eigenvectors().col(0);
-  return d.dot(hint) < 0 ? Eigen::Vector3d(-d) : d;
+// The extrusion direction minimises Σ ⟨n, d⟩² over the local normals (an eigenproblem).
+NormalsDirection normals_direction(const Eigen::Matrix3Xd& normals, const Eigen::Vector3d& hint) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(normals * normals.transpose());
+  const Eigen::Vector3d d = eig.eigenvectors().col(0);
+  const double sum = eig.eigenvalues().sum();
+  return {d.dot(hint) < 0 ? Eigen::Vector3d(-d) : d,
+          sum > 0 ? std::max(eig.eigenvalues()[0], 0.0) / sum : 0.0};
 }
 
 ExtrusionRecovery recover_extrusion(const Eigen::Matrix3Xd& points, const ExtrusionOptions& o) {
@@ -108,21 +88,42 @@ ExtrusionRecovery recover_extrusion(const Eigen::Matrix3Xd& points, const Extrus
   mo.threads = o.threads;
   const Eigen::Matrix3Xd sub = strided(points, o.max_direction_points);
   const Eigen::Vector3d hint = out.pca.axis(FrameAxis::principal);
-  out.direction = o.direction ? Eigen::Vector3d(o.direction->normalized())
-                              : normals_direction(sub, o.normal_neighbours, hint, o.threads);
+  const NormalsDirection normals =
+      normals_direction(local_normals(sub, o.normal_neighbours, o.threads), hint);
+  out.normals_flatness = normals.flatness;
+  out.start_direction =
+      o.direction ? Eigen::Vector3d(o.direction->normalized()) : normals.direction;
+  out.direction = out.refinement.direction = out.start_direction;
+  if (o.refine_direction) {
+    AxisRefinementOptions ro;
+    ro.size = out.size;
+    ro.threads = o.threads;
+    ro.scale_floor = out.tolerance / 3;
+    ro.max_iterations = 12;
+    ro.step_tolerance = 1e-10;
+    const MeridianModel model = [&](const Eigen::Matrix2Xd& q) {
+      const MeridianProfile p = section_loops(q, mo);
+      const MeridianDistances d = meridian_distances(p, q, o.threads);
+      return MeridianResiduals{d.distance, d.normal,
+                               std::vector<char>(static_cast<std::size_t>(q.cols()), 1)};
+    };
+    out.refinement = refine_extrusion_direction(strided(points, o.max_refine_points), out.origin,
+                                                out.start_direction, model, ro);
+    out.direction = out.refinement.direction;
+  }
   std::tie(out.e1, out.e2) = normal_pair(out.direction);
   out.timings_s.direction = seconds_since(t0);
 
   t0 = std::chrono::steady_clock::now();
-  out.projected = project(points, out.origin, out.e1, out.e2);
-  out.section = section_loops(out.projected, mo);
+  out.plane = project_onto_plane(points, out.origin, out.e1, out.e2);
+  out.profile = section_loops(out.plane, mo);
   const Eigen::VectorXd h = (points.colwise() - out.origin).transpose() * out.direction;
   out.v_low = h.minCoeff();
   out.v_high = h.maxCoeff();
   out.timings_s.profile = seconds_since(t0);
 
   t0 = std::chrono::steady_clock::now();
-  for (const MeridianLoop& l : out.section.loops) {
+  for (const MeridianLoop& l : out.profile.loops) {
     NurbsCurve3d::Points pts;
     for (const Eigen::Vector2d& p : l.curve.control_points())
       pts.push_back(out.origin + p.x() * out.e1 + p.y() * out.e2);
@@ -132,11 +133,7 @@ ExtrusionRecovery recover_extrusion(const Eigen::Matrix3Xd& points, const Extrus
   out.timings_s.surface = seconds_since(t0);
 
   t0 = std::chrono::steady_clock::now();
-  // Every point lies within the extent, so its 3D distance is its section-plane distance.
-  PointErrors e = point_errors(out.section, out.projected, out.tolerance, o.threads);
-  out.distances = std::move(e.distances);
-  out.error = e.error;
-  out.unexplained = e.unexplained;
+  measure_point_errors(out, o.threads);
   out.timings_s.error = seconds_since(t0);
   return out;
 }

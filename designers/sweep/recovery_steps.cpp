@@ -29,14 +29,12 @@ void check_sweep_input(const Eigen::Matrix3Xd& points,
                      "direction is zero");
 }
 
-PointErrors point_errors(const MeridianProfile& profile, const Eigen::Matrix2Xd& plane_points,
-                         double tolerance, int threads) {
-  PointErrors out;
-  out.distances = meridian_distances(profile, plane_points, threads).distance;
-  out.error = error_stats(out.distances);
-  for (Eigen::Index k = 0; k < out.distances.size(); ++k)
-    out.unexplained += std::abs(out.distances[k]) > tolerance;
-  return out;
+void measure_point_errors(SweptFit& fit, int threads) {
+  fit.distances = meridian_distances(fit.profile, fit.plane, threads).distance;
+  fit.error = error_stats(fit.distances);
+  fit.unexplained = 0;
+  for (Eigen::Index k = 0; k < fit.distances.size(); ++k)
+    fit.unexplained += std::abs(fit.distances[k]) > fit.tolerance;
 }
 
 }  // namespace polarform

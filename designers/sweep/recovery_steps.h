@@ -1,7 +1,7 @@
-// Helpers shared by the sweep recoveries (revolution, extrusion): the input checks, the seconds of
-// a stage and an evenly strided subset of a cloud, on which a direction or an axis is estimated
-// before every point is used for the profile and the errors. Kantz 2003, §5 works on a whole cloud;
-// the subset only bounds the cost of the estimates.
+// What the sweep recoveries (revolution, extrusion) share: the result common to both and the
+// helpers — the input checks, the seconds of a stage and an evenly strided subset of a cloud, on
+// which a direction or an axis is estimated before every point is used for the profile and the
+// errors. Kantz 2003, §5 works on a whole cloud; the subset only bounds the cost of the estimates.
 #pragma once
 
 #include <Eigen/Core>
@@ -9,22 +9,32 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "designers/sweep/meridian_profile.h"
 #include "src/fit/error_stats.h"
+#include "src/nurbs/nurbs_surface.h"
 
 namespace polarform {
 
-// The errors of every point: signed distances of its plane coordinates to the profile's curves
-// (the true 3D distances for a surface of revolution and an extrusion alike), their statistics
-// and the count beyond the tolerance.
-struct PointErrors {
-  Eigen::VectorXd distances;
+// A recovered sweep (Kantz 2003, §5): the profile in its plane — the meridian (z, r) of a surface
+// of revolution, the section (x, y) of an extrusion — every point's coordinates in that plane,
+// the exact swept surfaces (one per profile loop) and the true distances of all points.
+struct SweptFit {
+  MeridianProfile profile;
+  std::vector<NurbsSurface> surfaces;
+  Eigen::Matrix2Xd plane;     // the profile-plane coordinates of every point
+  Eigen::VectorXd distances;  // signed true distances of every point to the surfaces
   ErrorStats error;
-  std::size_t unexplained = 0;
+  double size = 0.0;  // bounding-box diagonal of the points
+  double tolerance = 0.0;
+  std::size_t unexplained = 0;  // points farther than the tolerance
 };
-PointErrors point_errors(const MeridianProfile& profile, const Eigen::Matrix2Xd& plane_points,
-                         double tolerance, int threads);
+
+// Fills fit.distances, error and unexplained: the signed distances of the plane coordinates to the
+// profile's curves, which are the true 3D distances for a surface of revolution and for an
+// extrusion (every point within its extent) alike.
+void measure_point_errors(SweptFit& fit, int threads);
 
 double seconds_since(std::chrono::steady_clock::time_point t0);
 

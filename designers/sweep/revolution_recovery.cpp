@@ -90,8 +90,8 @@ RevolutionRecovery recover_revolution(const Eigen::Matrix3Xd& points, const Revo
   out.timings_s.axis = seconds_since(t0);
 
   t0 = std::chrono::steady_clock::now();
-  out.meridian = meridian_coordinates(points, out.axis, o.threads);
-  out.profile = recover_meridian_profile(out.meridian, mo);
+  out.plane = meridian_coordinates(points, out.axis, o.threads);
+  out.profile = recover_meridian_profile(out.plane, mo);
   out.timings_s.profile = seconds_since(t0);
 
   t0 = std::chrono::steady_clock::now();
@@ -100,11 +100,7 @@ RevolutionRecovery recover_revolution(const Eigen::Matrix3Xd& points, const Revo
   out.timings_s.surface = seconds_since(t0);
 
   t0 = std::chrono::steady_clock::now();
-  // For a surface of revolution the 3D distance equals the (z, r) distance to the profile.
-  PointErrors e = point_errors(out.profile, out.meridian, out.tolerance, o.threads);
-  out.distances = std::move(e.distances);
-  out.error = e.error;
-  out.unexplained = e.unexplained;
+  measure_point_errors(out, o.threads);
   out.timings_s.error = seconds_since(t0);
   return out;
 }

@@ -9,11 +9,9 @@
 #include <optional>
 #include <vector>
 
-#include "designers/sweep/meridian_profile.h"
-#include "src/fit/error_stats.h"
+#include "designers/sweep/recovery_steps.h"
 #include "src/fit/principal_frame.h"
 #include "src/fit/rotation_axis.h"
-#include "src/nurbs/nurbs_surface.h"
 
 namespace polarform {
 
@@ -29,20 +27,14 @@ struct RevolutionOptions {
   int threads = 2;
 };
 
-struct RevolutionRecovery {
+// SweptFit's profile is the meridian, its plane the (z, r) of every point, its surfaces of degree
+// (2, p).
+struct RevolutionRecovery : SweptFit {
   PrincipalFrame pca;
   double tie_ratio = 0.0;  // of the two eigenvalues other than the axis's
   AxisLine start_axis, axis;
   AxisRefinement refinement;  // rms before/after, iterations, covariance
   bool ring_axis = false;     // refined on ring clusters
-  MeridianProfile profile;
-  std::vector<NurbsSurface> surfaces;  // one per profile loop, degree (2, p)
-  Eigen::Matrix2Xd meridian;           // (z, r) of every point
-  Eigen::VectorXd distances;           // signed true distances of every point to the surface
-  ErrorStats error;
-  double size = 0.0;  // bounding-box diagonal of the points
-  double tolerance = 0.0;
-  std::size_t unexplained = 0;  // points farther than the tolerance
   struct Timings {
     double frame = 0, axis = 0, profile = 0, surface = 0, error = 0;
   } timings_s;

@@ -1,14 +1,16 @@
 // The sweep-recovery job of `polarform sweep` (Kantz 2003): a scan or mesh is read, its kind is
-// decided and the swept surface recovered — today the surface of revolution (spec K11); the
-// extrusion and section kinds are not implemented yet and are refused by name. Computing writes
-// nothing; sweep_outputs.h writes the bundle.
+// decided (designers/sweep/sweep_kind.h; both are recovered and the better kept when the evidence
+// allows both or neither) and the swept surface recovered — the surface of revolution (spec K11)
+// or the extrusion (spec K10). Computing writes nothing; sweep_outputs.h writes the bundle.
 #pragma once
 
 #include <filesystem>
 #include <optional>
 #include <string>
 
+#include "designers/sweep/extrusion_recovery.h"
 #include "designers/sweep/revolution_recovery.h"
+#include "designers/sweep/sweep_kind.h"
 #include "jobs/interrogation/surface_interrogation.h"
 
 namespace polarform {
@@ -17,7 +19,7 @@ enum class SweepKind { automatic, revolution, extrusion };
 
 struct SweepJobOptions {
   SweepKind kind = SweepKind::automatic;
-  std::optional<Eigen::Vector3d> axis, center;  // --axis, --center
+  std::optional<Eigen::Vector3d> axis, center;  // --axis, --center (an extrusion: its direction)
   double tolerance = 0.0;                       // <= 0: 1e-4 of the size
   int degree = 3;
   double corner_angle_deg = 30.0;
@@ -30,16 +32,22 @@ struct SweepJobResult {
   std::filesystem::path input;
   Eigen::Matrix3Xd points;
   std::size_t dropped = 0;
-  std::string kind = "revolution";
+  std::optional<SweepKindEvidence> evidence;  // decided automatically
   std::string reason;  // why this kind, with the numbers that decided it
-  RevolutionRecovery revolution;
+  // The kind kept is the one present; both are present when both were recovered and compared
+  // (the other one is then kept for the report only).
+  std::optional<RevolutionRecovery> revolution;
+  std::optional<ExtrusionRecovery> extrusion;
+  bool is_extrusion = false;
+  std::string kind() const { return is_extrusion ? "extrusion" : "revolution"; }
+  const SweptFit& fit() const;  // the kept recovery
   std::optional<SurfaceInterrogation> interrogation;
   double read_seconds = 0.0, total_seconds = 0.0;
-  bool tolerance_met() const { return revolution.error.max <= revolution.tolerance; }
+  bool tolerance_met() const { return fit().error.max <= fit().tolerance; }
 };
 
-// Throws InputError for an unreadable file or bad options (a zero axis, --center without --axis,
-// the kind extrusion), NumericalError when no profile can be recovered.
+// Throws InputError for an unreadable file or bad options (a zero axis, --center without --axis or
+// with the kind extrusion), NumericalError when no profile can be recovered.
 SweepJobResult run_sweep_job(const std::filesystem::path& scan,
                              const SweepJobOptions& options = {});
 

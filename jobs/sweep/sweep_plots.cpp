@@ -1,6 +1,8 @@
 #include "jobs/sweep/sweep_plots.h"
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 
 namespace polarform {
 
@@ -12,17 +14,17 @@ Eigen::Index figure_stride(Eigen::Index n) { return std::max<Eigen::Index>(1, n 
 }  // namespace
 
 Figure sweep_profile_figure(const SweepJobResult& r) {
-  const RevolutionRecovery& v = r.revolution;
+  const SweptFit& v = r.fit();
   Figure f(900, 600);
-  f.title = "meridian profile of " + r.input.filename().string();
+  f.title = (r.is_extrusion ? "section of " : "meridian profile of ") + r.input.filename().string();
   Plot& p = f.add_panel();
-  p.x_label = "z along the axis [mm]";
-  p.y_label = "r from the axis [mm]";
+  p.x_label = r.is_extrusion ? "x in the section plane [mm]" : "z along the axis [mm]";
+  p.y_label = r.is_extrusion ? "y in the section plane [mm]" : "r from the axis [mm]";
   p.equal_aspect = true;
   Series pts{"projected points", {}, {}, Series::Style::markers, "#9ab"};
-  for (Eigen::Index k = 0; k < v.meridian.cols(); k += figure_stride(v.meridian.cols())) {
-    pts.x.push_back(v.meridian(0, k));
-    pts.y.push_back(v.meridian(1, k));
+  for (Eigen::Index k = 0; k < v.plane.cols(); k += figure_stride(v.plane.cols())) {
+    pts.x.push_back(v.plane(0, k));
+    pts.y.push_back(v.plane(1, k));
   }
   p.add(pts);
   for (std::size_t l = 0; l < v.profile.loops.size(); ++l) {
@@ -56,15 +58,17 @@ Figure sweep_profile_figure(const SweepJobResult& r) {
 }
 
 Figure sweep_preview_figure(const SweepJobResult& r) {
-  const RevolutionRecovery& v = r.revolution;
+  const SweptFit& v = r.fit();
   Figure f(900, 450);
-  f.title = "deviation of every point from the surface of revolution";
+  f.title = r.is_extrusion ? "deviation of every point from the extruded surface"
+                           : "deviation of every point from the surface of revolution";
   Plot& p = f.add_panel();
-  p.x_label = "z along the axis [mm]";
+  p.x_label = r.is_extrusion ? "angle φ about the section's centroid [°]" : "z along the axis [mm]";
   p.y_label = "signed distance [mm]";
   Series d{"points", {}, {}, Series::Style::markers, "#14c"};
   for (Eigen::Index k = 0; k < v.distances.size(); k += figure_stride(v.distances.size())) {
-    d.x.push_back(v.meridian(0, k));
+    d.x.push_back(r.is_extrusion ? std::atan2(v.plane(1, k), v.plane(0, k)) * 180 / std::numbers::pi
+                                 : v.plane(0, k));
     d.y.push_back(v.distances[k]);
   }
   p.add(d);

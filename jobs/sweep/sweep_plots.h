@@ -1,6 +1,7 @@
-// The figures of a sweep job: the meridian profile (the projected points, the profile points it
-// was fitted to, its corners and the curve; z along the axis, r from it) and the preview (the
-// signed deviation of every point against z).
+// The figures of a sweep job: the profile in its plane (the projected points, the profile points
+// it was fitted to, its corners and the curve; the meridian (z, r) of a surface of revolution or
+// the section (x, y) of an extrusion) and the preview (the signed deviation of every point against
+// z along the axis, or against its angle about the section's centroid).
 #pragma once
 
 #include "export/figure.h"

@@ -10,6 +10,7 @@
 #include "src/fit/error_stats.h"
 #include "src/fit/grid_index.h"
 #include "src/fit/parallel.h"
+#include "src/fit/robust_weights.h"
 
 namespace polarform {
 
@@ -41,18 +42,6 @@ Eigen::Matrix<double, 2, 4> meridian_jacobian(const Eigen::Vector3d& p, const Ax
     J.row(1).setZero();
   }
   return J;
-}
-
-// Tukey's biweight (c = 4.685) on the scale 1.4826·MAD, floored.
-Eigen::VectorXd tukey_weights(const Eigen::VectorXd& residual, double floor) {
-  const double mad = residual.size() ? abs_quantile(residual, 0.5) : 0.0;
-  const double s = std::max(1.4826 * mad, floor);
-  Eigen::VectorXd w(residual.size());
-  for (Eigen::Index k = 0; k < residual.size(); ++k) {
-    const double t = residual[k] / (4.685 * s);
-    w[k] = std::abs(t) < 1.0 ? (1 - t * t) * (1 - t * t) : 0.0;
-  }
-  return w;
 }
 
 // Applies the step (α, β, γ, δ) and moves the axis point to the foot of the centroid.

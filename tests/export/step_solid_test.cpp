@@ -2,13 +2,16 @@
 // one solid with the expected faces, no reader messages, and a volume (GProp) equal to the closed
 // form (pi a b - pi r^2) t of an exact rational ellipse profile with a bore, to 1e-6 relative, for
 // quadratic, degree-9 and degree-12 profiles and for a clockwise profile; bad input is refused.
+#include "export/step_solid.h"
+
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <numbers>
 
+#include "export/atomic_file.h"
 #include "export/exchange_geometry.h"
-#include "export/step_solid.h"
 #include "src/error.h"
 #include "tests/support/export/exchange_fixtures.h"
 
@@ -98,6 +101,31 @@ TEST(StepSolidOcct, ValidSolidWithClosedFormVolume) {
         << "volume " << props.Mass() << " vs closed form " << exact;
     RecordProperty(c.label, sci(std::abs(props.Mass() - exact) / exact));
   }
+}
+
+// A placed solid (the sweep job's extrusion in its own frame): the same volume, and the centre of
+// mass (the ellipse's centre at mid-height in the profile frame) moved by the placement to 1e-7.
+TEST(StepSolidOcct, PlacedSolidIsRigidlyMoved) {
+  Eigen::Isometry3d placement = Eigen::Isometry3d::Identity();
+  placement.linear() =
+      Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 0.5).normalized()).toRotationMatrix();
+  placement.translation() = Eigen::Vector3d(12, -7, 31);
+  const ScratchDir dir("step_solid_placed");
+  const auto path = dir / "placed.stp";
+  write_file_atomically(path, step_extruded_solid(ellipse(40, 25, {3, -2}), 12.0, std::nullopt,
+                                                  "extrusion", header(), placement));
+  STEPControl_Reader reader;
+  ASSERT_EQ(reader.ReadFile(path.c_str()), IFSelect_RetDone);
+  reader.TransferRoots();
+  const TopoDS_Shape shape = reader.OneShape();
+  EXPECT_TRUE(BRepCheck_Analyzer(shape).IsValid());
+  GProp_GProps props;
+  BRepGProp::VolumeProperties(shape, props, 1e-10);
+  const double exact = std::numbers::pi * 40 * 25 * 12;
+  EXPECT_LT(std::abs(props.Mass() - exact) / exact, 1e-6);
+  const gp_Pnt g = props.CentreOfMass();
+  const Eigen::Vector3d expected = placement * Eigen::Vector3d(3, -2, 6);
+  EXPECT_LT((Eigen::Vector3d(g.X(), g.Y(), g.Z()) - expected).norm(), 1e-7);
 }
 
 #else

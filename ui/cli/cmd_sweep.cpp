@@ -1,6 +1,7 @@
-// `polarform sweep`: recover a swept surface from a scan or mesh of a turned part (Kantz 2003):
-// the axis, the meridian profile and the exact surface of revolution, with the true distances of
-// every point. Exit 1 when --tol is not met (the bundle is written, the report says by how much).
+// `polarform sweep`: recover a swept surface from a scan or mesh of a turned or extruded part
+// (Kantz 2003): the axis and meridian profile of a surface of revolution, or the direction and
+// section of an extrusion, and the exact surface, with the true distances of every point. Exit 1
+// when --tol is not met (the bundle is written, the report says by how much).
 #include <cstdio>
 #include <filesystem>
 
@@ -48,19 +49,27 @@ void run(const SweepArgs& a) {
   o.interrogate = interrogate_option(a.interrogate);
   const SweepJobResult r = run_sweep_job(a.scan, o);
   const std::vector<std::string> files = write_sweep_outputs(r, a.out);
-  const RevolutionRecovery& v = r.revolution;
+  const SweptFit& v = r.fit();
   if (!a.quiet) {
+    if (r.is_extrusion) {
+      const Eigen::Vector3d& d = r.extrusion->direction;
+      std::printf("%s: %ld points, extrusion along (%.9g, %.9g, %.9g), length %.9g mm\n",
+                  r.input.filename().string().c_str(), static_cast<long>(r.points.cols()), d.x(),
+                  d.y(), d.z(), r.extrusion->length());
+    } else {
+      const AxisLine& x = r.revolution->axis;
+      std::printf(
+          "%s: %ld points, surface of revolution, axis through (%.9g, %.9g, %.9g) along (%.9g, "
+          "%.9g, %.9g)\n",
+          r.input.filename().string().c_str(), static_cast<long>(r.points.cols()), x.point.x(),
+          x.point.y(), x.point.z(), x.direction.x(), x.direction.y(), x.direction.z());
+    }
     std::printf(
-        "%s: %ld points, surface of revolution, axis through (%.9g, %.9g, %.9g) along (%.9g, %.9g, "
-        "%.9g)\n",
-        r.input.filename().string().c_str(), static_cast<long>(r.points.cols()), v.axis.point.x(),
-        v.axis.point.y(), v.axis.point.z(), v.axis.direction.x(), v.axis.direction.y(),
-        v.axis.direction.z());
-    std::printf(
-        "%zu profile loop(s), surface degree (2, %d); distance of all points rms %.4g, p95 %.4g, "
+        "%zu %s loop(s), surface degree (%d, %d); distance of all points rms %.4g, p95 %.4g, "
         "max %.4g mm\n",
-        v.profile.loops.size(), v.surfaces.empty() ? 0 : v.surfaces[0].degree_v(), v.error.rms,
-        v.error.p95, v.error.max);
+        v.profile.loops.size(), r.is_extrusion ? "section" : "profile",
+        v.surfaces.empty() ? 0 : v.surfaces[0].degree_u(),
+        v.surfaces.empty() ? 0 : v.surfaces[0].degree_v(), v.error.rms, v.error.p95, v.error.max);
     std::printf("wrote %zu files to %s (%.0f ms)\n", files.size(),
                 std::filesystem::absolute(a.out).string().c_str(), r.total_seconds * 1e3);
   }
@@ -76,18 +85,23 @@ void add_sweep_command(CLI::App& app) {
   auto args = std::make_shared<SweepArgs>();
   CLI::App* cmd = app.add_subcommand(
       "sweep",
-      "Recover the exact surface of revolution of a scanned or meshed turned part (Kantz 2003):\n"
+      "Recover the exact swept surface of a scanned or meshed part (Kantz 2003). A turned part:\n"
       "the axis (PCA, refined by Gauss-Newton on ring clusters or profile residuals), every point\n"
       "projected to the meridian plane, the profile fitted to a tolerance with corners and poles,\n"
-      "revolved exactly (degree (2, p)). SCAN is any file fit reads (xyz/csv, PLY, STL, OBJ, "
-      "OFF).\n"
-      "Writes surface.igs/.stp/.x3d, profile.igs/.dxf/.svg, deviation.ply, preview.svg,\n"
-      "report.json and report.html. Exit 1 when --tol is not met (files written), 2 on bad input.");
+      "revolved exactly (degree (2, p)). An extruded part: the direction (local normals, refined\n"
+      "against the section), every point projected onto the section plane, the section fitted\n"
+      "(polar fit when star-shaped), extruded exactly (degree (p, 1)). --kind auto decides by the\n"
+      "normals (flat: extrusion; in planes through the axis: revolution; else both, the better\n"
+      "kept). SCAN is any file fit reads (xyz/csv, PLY, STL, OBJ, OFF).\n"
+      "Writes surface.igs/.stp/.x3d, profile.igs/.stp/.dxf/.svg, solid.stp (an extrusion of one\n"
+      "closed section), deviation.ply, preview.svg, report.json and report.html.\n"
+      "Exit 1 when --tol is not met (files written), 2 on bad input.");
   cmd->add_option("scan", args->scan, "point cloud or mesh file")->required();
   cmd->add_option("--out", args->out, "output directory (created if missing)")->required();
-  cmd->add_option("--kind", args->kind,
-                  "auto|revolution|extrusion (extrusion: not implemented yet)");
-  cmd->add_option("--axis", args->axis, "X,Y,Z: the axis direction (default: PCA, refined)");
+  cmd->add_option("--kind", args->kind, "auto|revolution|extrusion (default auto)");
+  cmd->add_option("--axis", args->axis,
+                  "X,Y,Z: the axis or extrusion direction to start from (default: PCA or the "
+                  "normals; refined either way)");
   cmd->add_option("--center", args->center, "X,Y,Z: a point on the axis (with --axis)");
   cmd->add_option("--tol", args->tol,
                   "max distance of every point to the surface [mm] (default 1e-4 of the size)");

@@ -1,14 +1,16 @@
-// The sweep job end to end: a ring mesh of a stepped turned part written as xyz, recovered and
-// written as a bundle whose report.json carries the axis, the profile and the errors; bad options
-// are refused by name.
+// The sweep job end to end: a ring mesh of a walled tube and a sampled elliptic prism written as
+// xyz, their kinds decided, recovered and written as bundles whose report.json carries the axis or
+// the extrusion, the profile and the errors; bad options are refused by name.
 #include "jobs/sweep/sweep_job.h"
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <random>
 
 #include "jobs/sweep/sweep_outputs.h"
 #include "src/error.h"
@@ -38,7 +40,7 @@ TEST(SweepJob, TubeBundleAndReport) {
   o.tolerance = 1e-6;
   const SweepJobResult r = run_sweep_job(write_tube(dir), o);
   EXPECT_TRUE(r.tolerance_met());
-  EXPECT_NEAR(std::abs(r.revolution.axis.direction.y()), 1.0, 1e-12);
+  EXPECT_NEAR(std::abs(r.revolution->axis.direction.y()), 1.0, 1e-12);
   const std::vector<std::string> files = write_sweep_outputs(r, dir / "out");
   for (const char* f :
        {"surface.igs", "surface.stp", "surface.x3d", "profile.igs", "profile.dxf", "profile.svg",
@@ -54,15 +56,75 @@ TEST(SweepJob, TubeBundleAndReport) {
   EXPECT_EQ(j["error_mm"]["count"], 192);
 }
 
+// An elliptic prism (semi-axes 20 and 10, length 60) on a tilted direction, its side sampled at
+// 8000 random points (no noise), written as xyz: auto decides "extrusion" by the flat normals.
+std::filesystem::path write_prism(const std::filesystem::path& dir, Eigen::Vector3d& direction) {
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path file = dir / "prism.xyz";
+  const Eigen::Matrix3d R =
+      Eigen::AngleAxisd(0.4, Eigen::Vector3d(2, -1, 0.5).normalized()).toRotationMatrix();
+  direction = R.col(2);
+  std::ofstream out(file);
+  out.precision(17);
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> U(0, 1);
+  for (int k = 0; k < 8000; ++k) {
+    const double t = 2 * std::numbers::pi * U(rng);
+    const Eigen::Vector3d p = R * Eigen::Vector3d(20 * std::cos(t), 10 * std::sin(t), 60 * U(rng)) +
+                              Eigen::Vector3d(4, 5, -6);
+    out << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+  }
+  return file;
+}
+
+TEST(SweepJob, AutoFindsAnExtrusionAndWritesItsSolid) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "polarform_sweep_job_prism";
+  std::filesystem::remove_all(dir);
+  Eigen::Vector3d truth;
+  const std::filesystem::path file = write_prism(dir, truth);
+  SweepJobOptions o;
+  o.tolerance = 2e-3;
+  const SweepJobResult r = run_sweep_job(file, o);
+  ASSERT_TRUE(r.evidence.has_value());
+  EXPECT_TRUE(r.evidence->extrusion_like());
+  EXPECT_FALSE(r.evidence->revolution_like());
+  ASSERT_TRUE(r.is_extrusion);
+  EXPECT_FALSE(r.revolution.has_value());  // not tried: the evidence was clear
+  EXPECT_TRUE(r.tolerance_met());
+  const double tilt = std::acos(std::min(1.0, std::abs(r.extrusion->direction.dot(truth))));
+  EXPECT_LE(tilt, 2e-6);
+  EXPECT_NEAR(r.extrusion->length(), 60, 0.05);
+  const std::vector<std::string> files = write_sweep_outputs(r, dir / "out");
+  for (const char* f :
+       {"surface.igs", "surface.stp", "surface.x3d", "profile.igs", "profile.stp", "profile.dxf",
+        "profile.svg", "solid.stp", "deviation.ply", "preview.svg", "report.json", "report.html"})
+    EXPECT_TRUE(std::filesystem::exists(dir / "out" / f)) << f;
+  std::ifstream in(dir / "out" / "report.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["kind"], "extrusion");
+  EXPECT_TRUE(j["evidence"]["extrusion_like"].get<bool>());
+  EXPECT_NEAR(j["extrusion"]["length"].get<double>(), 60, 0.05);
+  EXPECT_NEAR(std::abs(j["extrusion"]["direction"][2].get<double>()), std::abs(truth.z()), 1e-5);
+  EXPECT_EQ(j["surface"]["degrees"][0][1], 1);
+  EXPECT_EQ(j["error_mm"]["count"], 8000);
+  EXPECT_LE(j["error_mm"]["max"].get<double>(), 2e-3);
+  EXPECT_FALSE(j.contains("axis"));
+}
+
 TEST(SweepJob, BadOptionsAreRefusedByName) {
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() / "polarform_sweep_job_bad";
   const std::filesystem::path file = write_tube(dir);
   SweepJobOptions o;
-  o.kind = SweepKind::extrusion;
-  EXPECT_THROW(run_sweep_job(file, o), InputError);
   o.kind = SweepKind::revolution;
   o.center = Eigen::Vector3d::Zero();
+  EXPECT_THROW(run_sweep_job(file, o), InputError);  // --center without --axis
+  o.axis = Eigen::Vector3d::UnitY();
+  o.kind = SweepKind::extrusion;
+  EXPECT_THROW(run_sweep_job(file, o), InputError);  // an extrusion has no axis point
+  o.center.reset();
+  o.axis = Eigen::Vector3d::Zero();
   EXPECT_THROW(run_sweep_job(file, o), InputError);
   EXPECT_THROW(run_sweep_job(dir / "missing.xyz", {}), InputError);
 }
