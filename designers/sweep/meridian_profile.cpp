@@ -149,12 +149,81 @@ MeridianProfile ring_profile(const Eigen::Matrix2Xd& zr, const std::vector<int>&
   return out;
 }
 
+// Spec B1 once more on every point of the band: each point takes the parameter of its foot on the
+// nearest loop, and every loop is refitted to its points in that order, with its corners (the
+// first point at or past each corner's parameter), its end points and its poles kept. The thinned
+// nodes fix the order and the corners; the least squares over all points average the noise.
+void refit_on_band(const Eigen::Matrix2Xd& band, MeridianProfile& out, const MeridianOptions& o) {
+  std::deque<CurveDistance<2>> dist;
+  for (const MeridianLoop& l : out.loops) dist.emplace_back(l.curve, l.closed);
+  const Eigen::Index n = band.cols();
+  std::vector<int> loop_of(static_cast<std::size_t>(n));
+  std::vector<double> u_of(static_cast<std::size_t>(n));
+  const int chunks = worker_count(o.threads, static_cast<std::size_t>(n));
+  parallel_chunks(static_cast<std::size_t>(n), chunks, [&](std::size_t b, std::size_t e, int) {
+    for (std::size_t k = b; k < e; ++k) {
+      double best = INFINITY;
+      for (std::size_t l = 0; l < dist.size(); ++l) {
+        const auto f = dist[l].project(band.col(static_cast<Eigen::Index>(k)));
+        if (f.distance < best) best = f.distance, loop_of[k] = static_cast<int>(l), u_of[k] = f.u;
+      }
+    }
+  });
+  for (std::size_t l = 0; l < out.loops.size(); ++l) {
+    MeridianLoop& loop = out.loops[l];
+    std::vector<int> ids;
+    for (Eigen::Index k = 0; k < n; ++k)
+      if (loop_of[k] == static_cast<int>(l)) ids.push_back(static_cast<int>(k));
+    std::sort(ids.begin(), ids.end(), [&](int a, int b) { return u_of[a] < u_of[b]; });
+    const int m = static_cast<int>(ids.size());
+    if (m < 4 * (o.degree + 1) || m <= loop.points.cols()) continue;
+    Eigen::Matrix2Xd pts(2, m);
+    Eigen::VectorXd u(m);
+    for (int k = 0; k < m; ++k) pts.col(k) = band.col(ids[k]), u[k] = u_of[ids[k]];
+    CurveFitOptions<2> f;
+    f.degree = o.degree;
+    f.closed = loop.closed;
+    f.tolerance = out.tolerance;
+    f.parameters = (u.array() - loop.curve.front()) / (loop.curve.back() - loop.curve.front());
+    f.max_control_points = std::max(static_cast<int>(loop.points.cols()), 8);
+    f.corner_support = std::clamp(2 * m / static_cast<int>(loop.points.cols()), 8, 400);
+    for (const Eigen::Vector2d& c : loop.corners) {
+      const double uc = dist[l].project(c).u;
+      f.corners.push_back(std::min<int>(
+          m - 1, static_cast<int>(std::lower_bound(u.data(), u.data() + m, uc) - u.data())));
+    }
+    if (!loop.closed) {
+      f.start = loop.curve.point(loop.curve.front());
+      f.end = loop.curve.point(loop.curve.back());
+    }
+    const CurveFit<2> fit = fit_curve<2>(pts, f);
+    loop.curve =
+        fit.curve.degree() < o.degree
+            ? NurbsCurve2d(elevate_degree(fit.curve.homogeneous(), o.degree - fit.curve.degree()))
+            : fit.curve;
+    loop.points = pts;
+    loop.fit_max = fit.max_distance;
+    loop.tolerance_met = fit.tolerance_met;
+    loop.corners.clear();
+    for (double c : fit.corner_parameters) loop.corners.push_back(loop.curve.point(c));
+  }
+}
+
+// Kantz 2003, §4.4–4.5 on a scan band: an evenly strided subset of at most max_structure_points
+// is made thin by MLS (the radius grows until the neighbourhood is linear, up to 400 neighbours,
+// so that it outgrows the band's thickness), ordered into chains at the median radius the MLS
+// used; the chains' kept nodes give each loop's order, corners and ends; then every point of the
+// band (at most max_scan_points) refits it.
 MeridianProfile scan_profile(const Eigen::Matrix2Xd& zr, MeridianProfile out,
                              const MeridianOptions& o) {
-  const Eigen::Index stride =
-      std::max<Eigen::Index>(1, (zr.cols() + o.max_scan_points - 1) / o.max_scan_points);
-  Eigen::Matrix2Xd sub(2, (zr.cols() + stride - 1) / stride);
-  for (Eigen::Index k = 0; k < sub.cols(); ++k) sub.col(k) = zr.col(k * stride);
+  auto subset = [&](int max_points) {
+    const Eigen::Index stride =
+        std::max<Eigen::Index>(1, (zr.cols() + max_points - 1) / max_points);
+    Eigen::Matrix2Xd sub(2, (zr.cols() + stride - 1) / stride);
+    for (Eigen::Index k = 0; k < sub.cols(); ++k) sub.col(k) = zr.col(k * stride);
+    return sub;
+  };
+  const Eigen::Matrix2Xd sub = subset(o.max_structure_points);
   const GridIndex2d grid(sub);
   std::vector<double> nn;
   std::vector<int> two;
@@ -167,18 +236,39 @@ MeridianProfile scan_profile(const Eigen::Matrix2Xd& zr, MeridianProfile out,
   out.spacing = std::max(nn.empty() ? 0.0 : nn[nn.size() / 2], 1e-9 * out.size);
   MlsOptions mo;
   mo.radius = 6 * out.spacing;
+  mo.max_neighbours = 400;
+  mo.growth_steps = 6;
   mo.threads = o.threads;
-  const Eigen::Matrix2Xd thin = mls_thin(sub, mo).points;
+  const MlsThinning thinning = mls_thin(sub, mo);
+  const Eigen::Matrix2Xd& thin = thinning.points;
   out.clusters = static_cast<int>(thin.cols());
+  // The ordering radius bridges the gaps between neighbours along the thin band: at least the
+  // median radius the MLS used and the median distance to the 24th nearest thinned point (about
+  // 12 spacings along a curve, which random sampling leaves no gap as wide as).
+  std::vector<double> used(thinning.radius.data(), thinning.radius.data() + thinning.radius.size());
+  std::nth_element(used.begin(), used.begin() + used.size() / 2, used.end());
+  const GridIndex2d thin_grid(thin);
+  std::vector<double> reach;
+  std::vector<int> near;
+  for (Eigen::Index k = 0; k < thin.cols(); k += step) {
+    thin_grid.nearest(thin.col(k), 25, near);
+    if (!near.empty()) reach.push_back((thin.col(near.back()) - thin.col(k)).norm());
+  }
+  std::nth_element(reach.begin(), reach.begin() + reach.size() / 2, reach.end());
+  const double order_radius =
+      std::max({mo.radius, used[used.size() / 2], reach.empty() ? 0.0 : reach[reach.size() / 2]});
   const std::vector<OrderedChain> chains =
-      order_points(thin, mo.radius, std::max(20, static_cast<int>(thin.cols() / 100)));
+      order_points(thin, order_radius, std::max(20, static_cast<int>(thin.cols() / 100)));
   for (const OrderedChain& c : chains) {
-    Eigen::Matrix2Xd pts(2, static_cast<Eigen::Index>(c.points.size()));
-    for (std::size_t k = 0; k < c.points.size(); ++k) pts.col(k) = thin.col(c.points[k]);
-    out.loops.push_back(fit_loop(pts, Eigen::VectorXd(), c.closed, mo.radius, 8, o, out.tolerance));
+    Eigen::Matrix2Xd pts(2, static_cast<Eigen::Index>(c.nodes.size()));
+    for (std::size_t k = 0; k < c.nodes.size(); ++k) pts.col(k) = thin.col(c.nodes[k]);
+    if (pts.cols() < 2) continue;
+    out.loops.push_back(
+        fit_loop(pts, Eigen::VectorXd(), c.closed, 2 * order_radius, 3, o, out.tolerance));
   }
   if (out.loops.empty())
     throw NumericalError("meridian profile: no profile could be ordered out of the points");
+  refit_on_band(subset(o.max_scan_points), out, o);
   return out;
 }
 

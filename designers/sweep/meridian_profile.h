@@ -19,7 +19,8 @@ struct MeridianOptions {
   double corner_angle = 0.5235987755982988;  // 30°
   double merge = 0.0;                        // ring cluster radius; <= 0: 1e-7·size
   bool axis_ends = true;        // open ends within the snap distance of r = 0 go to r = 0 exactly
-  int max_scan_points = 60000;  // scan bands are thinned on an evenly strided subset of this size
+  int max_structure_points = 4000;  // scan bands are thinned and ordered on a strided subset
+  int max_scan_points = 60000;      // ... and the profile refitted on one of this size
   int threads = 2;
 };
 

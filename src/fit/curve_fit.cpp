@@ -19,6 +19,9 @@ namespace polarform {
 
 namespace {
 
+// The shortest knot span the fit makes (the parameters live in [0, 1]).
+constexpr double kMinSpan = 1e-9;
+
 // Where the knots are: simple interior knots, corner knots of multiplicity p, and how the basis
 // functions map to unknown control points (fixed ends, a closed curve joined at a corner, or
 // periodic wrap-around).
@@ -318,8 +321,11 @@ CurveFit<Dim> fit_curve(const Matrix<Dim>& input, const CurveFitOptions<Dim>& o)
                    b = (refined[c].point - Q.col(j)).norm();
       if (a + b > 0.0) uc = u[k] + (u[j] - u[k]) * a / (a + b);
     }
-    if (uc > 1e-12 && uc < 1 - 1e-12 &&
-        std::find(L.corners.begin(), L.corners.end(), uc) == L.corners.end()) {
+    // Distinct from the ends and the other corners by more than a rounding error (given
+    // parameters may pile up: the feet beyond an open curve's end all have u = 1).
+    if (uc > kMinSpan && uc < 1 - kMinSpan &&
+        std::none_of(L.corners.begin(), L.corners.end(),
+                     [&](double c) { return std::abs(c - uc) <= kMinSpan; })) {
       L.corners.push_back(uc);
       fixed_at.push_back({uc, refined[c].point});
       corner_points.push_back(static_cast<int>(k));
@@ -365,6 +371,10 @@ CurveFit<Dim> fit_curve(const Matrix<Dim>& input, const CurveFitOptions<Dim>& o)
     const std::vector<double> k = equal_count_knots(in, runs[r], runs[r + 1], share);
     L.simple.insert(L.simple.end(), k.begin(), k.end());
   }
+  std::erase_if(L.simple, [&](double k) {  // a simple knot on a corner would raise it above C0
+    return std::any_of(L.corners.begin(), L.corners.end(),
+                       [&](double c) { return std::abs(c - k) <= kMinSpan; });
+  });
   std::sort(L.simple.begin(), L.simple.end());
   place_fixed();
 
@@ -411,7 +421,7 @@ CurveFit<Dim> fit_curve(const Matrix<Dim>& input, const CurveFitOptions<Dim>& o)
           in.push_back(u[k]);
           worst = std::max(worst, best.distances[k]);
         }
-      if (worst <= o.tolerance) continue;
+      if (worst <= o.tolerance || b[s + 1] - b[s] <= 2 * kMinSpan) continue;
       const std::vector<double> k = equal_count_knots(in, b[s], b[s + 1], 1);
       add.push_back(k.empty() ? 0.5 * (b[s] + b[s + 1]) : k[0]);
     }
