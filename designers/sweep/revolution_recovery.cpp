@@ -50,10 +50,11 @@ RevolutionRecovery recover_revolution(const Eigen::Matrix3Xd& points, const Revo
     ro.size = out.size;
     ro.threads = o.threads;
     // Ring-structured meshes: exact clusters decide (accepted when they collapse), from a merge
-    // radius that grows until the rings of a start axis that is off collapse into clusters.
+    // radius below the spacing of dense rings (1e-4 of the size: 1000 rings along a profile are
+    // ~1e-3 apart) that grows until the rings of a start axis that is off collapse into clusters.
     auto rings = [&](const AxisLine& from) {
       AxisRefinement r;
-      for (double merge : {1e-3, 4e-3, 1.6e-2}) {
+      for (double merge : {1e-4, 1e-3, 4e-3, 1.6e-2}) {
         r = refine_axis_by_rings(sub, from, merge * out.size, ro);
         if (r.converged && r.clustered >= 0.8 && r.rms_after <= 1e-9 * out.size)
           return std::pair<AxisRefinement, bool>{r, true};
