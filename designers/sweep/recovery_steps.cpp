@@ -12,6 +12,15 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+Eigen::Matrix2Xd kept_columns(const Eigen::Matrix2Xd& P, const std::vector<char>& flags) {
+  if (flags.empty()) return P;
+  Eigen::Matrix2Xd out(2, std::count(flags.begin(), flags.end(), 1));
+  Eigen::Index j = 0;
+  for (Eigen::Index k = 0; k < P.cols(); ++k)
+    if (flags[static_cast<std::size_t>(k)]) out.col(j++) = P.col(k);
+  return out;
+}
+
 Eigen::Matrix3Xd strided(const Eigen::Matrix3Xd& P, int max_points) {
   const Eigen::Index stride = std::max<Eigen::Index>(1, (P.cols() + max_points - 1) / max_points);
   Eigen::Matrix3Xd sub(3, (P.cols() + stride - 1) / stride);

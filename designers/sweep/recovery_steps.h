@@ -38,6 +38,9 @@ void measure_point_errors(SweptFit& fit, int threads);
 
 double seconds_since(std::chrono::steady_clock::time_point t0);
 
+// The columns whose flag is non-zero (all of them when flags is empty).
+Eigen::Matrix2Xd kept_columns(const Eigen::Matrix2Xd& points, const std::vector<char>& flags);
+
 // Every k-th point, k the smallest stride that leaves at most max_points.
 Eigen::Matrix3Xd strided(const Eigen::Matrix3Xd& points, int max_points);
 

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <string>
 
+#include "designers/sweep/azimuthal_coverage.h"
 #include "designers/sweep/recovery_steps.h"
 #include "src/error.h"
 #include "src/nurbs/surface_of_revolution.h"
@@ -66,14 +67,28 @@ RevolutionRecovery recover_revolution(const Eigen::Matrix3Xd& points, const Revo
       ro.scale_floor = out.tolerance / 3;
       ro.max_iterations = 10;
       ro.step_tolerance = 1e-9;
+      // The profile is fitted to the points a surface of revolution can explain (a feature on
+      // one side is set aside by its azimuths), the axis refined against it; twice, the points
+      // set aside again about the refined axis.
+      const Eigen::Matrix3Xd fit_sub = strided(sub, o.max_profile_axis_points);
+      std::vector<char> keep;
       const MeridianModel model = [&](const Eigen::Matrix2Xd& zr) {
-        const MeridianProfile p = recover_meridian_profile(zr, mo);
+        const MeridianProfile p = recover_meridian_profile(kept_columns(zr, keep), mo);
         const MeridianDistances d = meridian_distances(p, zr, o.threads);
-        return MeridianResiduals{d.distance, d.normal,
-                                 std::vector<char>(static_cast<std::size_t>(zr.cols()), 1)};
+        return MeridianResiduals{d.distance, d.normal, keep};
       };
-      out.refinement = refine_axis_by_profile(strided(sub, o.max_profile_axis_points),
-                                              out.start_axis, model, ro);
+      AzimuthalCoverage c = azimuthal_coverage(fit_sub, out.start_axis, o.coverage_cell * out.size);
+      keep = c.rotational;
+      out.refinement = refine_axis_by_profile(fit_sub, out.start_axis, model, ro);
+      if (c.set_aside > 0) {
+        c = azimuthal_coverage(fit_sub, out.refinement.axis, o.coverage_cell * out.size);
+        if (c.rotational != keep) {
+          keep = c.rotational;
+          const double before = out.refinement.rms_before;
+          out.refinement = refine_axis_by_profile(fit_sub, out.refinement.axis, model, ro);
+          out.refinement.rms_before = before;
+        }
+      }
       ro.scale_floor = 0.0;
       ro.max_iterations = 30;
       ro.step_tolerance = 1e-10;
@@ -92,7 +107,13 @@ RevolutionRecovery recover_revolution(const Eigen::Matrix3Xd& points, const Revo
 
   t0 = std::chrono::steady_clock::now();
   out.plane = meridian_coordinates(points, out.axis, o.threads);
-  out.profile = recover_meridian_profile(out.plane, mo);
+  if (out.ring_axis || !o.refine_axis) {
+    out.profile = recover_meridian_profile(out.plane, mo);
+  } else {
+    const AzimuthalCoverage c = azimuthal_coverage(points, out.axis, o.coverage_cell * out.size);
+    out.set_aside = c.set_aside;
+    out.profile = recover_meridian_profile(kept_columns(out.plane, c.rotational), mo);
+  }
   out.timings_s.profile = seconds_since(t0);
 
   t0 = std::chrono::steady_clock::now();

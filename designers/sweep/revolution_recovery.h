@@ -24,6 +24,9 @@ struct RevolutionOptions {
   double corner_angle = 0.5235987755982988;  // 30°
   int max_axis_points = 40000;  // the axis is refined on an evenly strided subset of this size
   int max_profile_axis_points = 12000;  // ... and of this size against a scan's profile
+  // Scans: the (z, r) cell of the azimuthal coverage test, relative to the size
+  // (azimuthal_coverage.h); points of one-sided cells are left out of the profile.
+  double coverage_cell = 0.01;
   int threads = 2;
 };
 
@@ -35,6 +38,7 @@ struct RevolutionRecovery : SweptFit {
   AxisLine start_axis, axis;
   AxisRefinement refinement;  // rms before/after, iterations, covariance
   bool ring_axis = false;     // refined on ring clusters
+  std::size_t set_aside = 0;  // scans: points left out of the profile (one-sided cells)
   struct Timings {
     double frame = 0, axis = 0, profile = 0, surface = 0, error = 0;
   } timings_s;

@@ -95,7 +95,8 @@ json revolution_json(const RevolutionRecovery& v) {
           {"rms_before_mm", v.refinement.rms_before},
           {"rms_after_mm", v.refinement.rms_after},
           {"iterations", v.refinement.iterations},
-          {"refined_on", v.ring_axis ? "ring clusters" : "profile residuals"}};
+          {"refined_on", v.ring_axis ? "ring clusters" : "profile residuals"},
+          {"set_aside_points", v.set_aside}};
 }
 
 json extrusion_json(const ExtrusionRecovery& x) {
