@@ -88,6 +88,25 @@ TEST(RevolutionRecovery, WalledTubeIsAClosedRectangle) {
     }
 }
 
+// Two skins and a foot on the axis (S3): one open profile through both skins, both ends on the
+// axis (poles), every vertex within the tolerance, axis exact.
+TEST(RevolutionRecovery, VaseWithTwoSkinsIsOneProfileFromPoleToPole) {
+  const AxisLine truth = test::tilted_axis();
+  const Eigen::Matrix3Xd P = test::ring_mesh(test::vase_profile(), truth, 24);
+  RevolutionOptions o;
+  o.tolerance = 1e-5;
+  const RevolutionRecovery r = recover_revolution(P, o);
+  EXPECT_LE(axis_angle(r.axis, truth), 1e-9);
+  EXPECT_LE(axis_offset(truth, r.axis), 1e-9);
+  ASSERT_EQ(r.profile.loops.size(), 1u);
+  const MeridianLoop& l = r.profile.loops[0];
+  EXPECT_FALSE(l.closed);
+  EXPECT_TRUE(l.start_on_axis && l.end_on_axis);
+  EXPECT_LE(r.error.max, o.tolerance);
+  for (Eigen::Index k = 0; k < P.cols(); k += 5)
+    EXPECT_LE(closest_point(r.surfaces[0], P.col(k)).distance, o.tolerance);
+}
+
 TEST(RevolutionRecovery, NoisyScanAxisWithinItsCovarianceAndRmsBelowSigma) {
   const AxisLine truth = test::tilted_axis();
   Eigen::Matrix3Xd T;

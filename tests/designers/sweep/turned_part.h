@@ -32,6 +32,23 @@ inline std::vector<Eigen::Vector2d> tube_profile() {
   return {{0, 0.25}, {0, 0.4}, {1.2, 0.4}, {1.2, 0.25}};
 }
 
+// A vase wall S3: a foot on the axis, an outer skin r = 0.5 + 0.1 sin(πz) up to a rim at z = 2,
+// the inner skin 0.05 inside it down to a floor at z = 0.1 that reaches the axis again: one open
+// profile through both skins, pole to pole (polyline of 84 vertices).
+inline std::vector<Eigen::Vector2d> vase_profile() {
+  std::vector<Eigen::Vector2d> p{{0, 0}};
+  for (int k = 0; k <= 40; ++k) {
+    const double z = 2.0 * k / 40;
+    p.emplace_back(z, 0.5 + 0.1 * std::sin(std::numbers::pi * z));
+  }
+  for (int k = 40; k >= 0; --k) {
+    const double z = 0.1 + 1.9 * k / 40;
+    p.emplace_back(z, 0.45 + 0.1 * std::sin(std::numbers::pi * z));
+  }
+  p.emplace_back(0.1, 0.0);
+  return p;
+}
+
 inline AxisLine tilted_axis() {
   AxisLine a;
   a.direction =
