@@ -28,7 +28,10 @@ MeridianProfile section_loops(const Eigen::Matrix2Xd& q, const MeridianOptions& 
   PolarFitOptions po;
   po.centre = Eigen::Vector2d::Zero();
   po.function.degree_v = mo.degree;
-  po.function.tolerance = mo.tolerance;
+  // Below 1e-7 of the band's size a tolerance only chases rounding (the refinement to it is
+  // capped there; the measured distances still face the tolerance asked for).
+  po.function.tolerance =
+      std::max(mo.tolerance, 1e-7 * (q.rowwise().maxCoeff() - q.rowwise().minCoeff()).norm());
   po.function.threads = mo.threads;
   po.closure = Closure::closed;
   po.outliers = OutlierPolicy::keep;

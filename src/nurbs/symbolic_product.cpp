@@ -43,6 +43,20 @@ void check_removal_tol(double tol, const char* what) {
 
 }  // namespace
 
+Knots snap_knots(const Knots& U, const Knots& V) {
+  if (U.empty() || V.empty()) return U;
+  const double tol = 1e-12 * std::max(U.back() - U.front(), V.back() - V.front());
+  Knots out = U;
+  for (double& u : out) {
+    const auto it = std::lower_bound(V.begin(), V.end(), u);
+    if (it != V.end() && *it != u && *it - u <= tol)
+      u = *it;
+    else if (it != V.begin() && *(it - 1) != u && u - *(it - 1) <= tol)
+      u = *(it - 1);
+  }
+  return out;
+}
+
 // Bae 2002, eq. (A.7); Mørken 1991.
 Knots product_knots(int p, const Knots& U, int q, const Knots& V) {
   const int nU = static_cast<int>(U.size()) - p - 1, nV = static_cast<int>(V.size()) - q - 1;
@@ -76,8 +90,9 @@ Knots product_knots(int p, const Knots& U, int q, const Knots& V) {
 }
 
 // Bae 2002, Appendix A.1 (steps 1-4) with the Bezier products of eq. (A.11).
-BSpline product_rows(const BSpline& f, const std::vector<int>& factor_rows, const BSpline& g,
-                     const std::vector<int>& g_rows, double removal_tol) {
+BSpline product_rows(const BSpline& unsnapped, const std::vector<int>& factor_rows,
+                     const BSpline& g, const std::vector<int>& g_rows, double removal_tol) {
+  const BSpline f(unsnapped.degree(), snap_knots(unsnapped.knots(), g.knots()), unsnapped.coefs());
   ps::check_row_maps(factor_rows, f.dim(), g_rows, g.dim(), "product");
   check_removal_tol(removal_tol, "product");
   const int p = f.degree(), q = g.degree(), d = p + q;

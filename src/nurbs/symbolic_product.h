@@ -20,10 +20,17 @@ namespace polarform {
 // interior knot has multiplicity above its factor's degree (a discontinuous factor).
 Knots product_knots(int p, const Knots& U, int q, const Knots& V);
 
-// H = f·g of degree p + q on product_knots. f scalar (dim 1) multiplies every row of g; otherwise
-// f.dim() == g.dim() and the rows multiply pairwise. removal_tol > 0 then removes whatever else is
-// removable within that coefficient-space tolerance (NURBS Book A5.8). Throws NumericalError if a
-// knot that (A.7) drops does not come out at round-off.
+// U with every knot that lies within a rounding error (1e-12 of the domain) of one of V's values
+// moved onto it: a factor's knot meant to fall on the other's break (an F knot on a base-arc
+// joint) must not become a second break an ulp away, which would make two knots of the product
+// whose multiplicities together exceed its degree + 1.
+Knots snap_knots(const Knots& U, const Knots& V);
+
+// H = f·g of degree p + q on product_knots (the first factor's knots snapped to the second's). f
+// scalar (dim 1) multiplies every row of g; otherwise f.dim() == g.dim() and the rows multiply
+// pairwise. removal_tol > 0 then removes whatever else is removable within that coefficient-space
+// tolerance (NURBS Book A5.8). Throws NumericalError if a knot that (A.7) drops does not come out
+// at round-off.
 BSpline product(const BSpline& f, const BSpline& g, double removal_tol = 0.0);
 
 // Row products: row r of the result is row factor_rows[r] of `factors` times row g_rows[r] of g,

@@ -16,9 +16,12 @@ namespace polarform {
 namespace ps = product_support;
 
 // Bae 2002, Appendix B (steps 1-4) with the bivariate Bezier products of eq. (B.6).
-BSplineSurface product_rows(const BSplineSurface& f, const std::vector<int>& factor_rows,
+BSplineSurface product_rows(const BSplineSurface& unsnapped, const std::vector<int>& factor_rows,
                             const BSplineSurface& g, const std::vector<int>& g_rows,
                             double removal_tol) {
+  const BSplineSurface f(unsnapped.degree_u(), unsnapped.degree_v(),
+                         snap_knots(unsnapped.knots_u(), g.knots_u()),
+                         snap_knots(unsnapped.knots_v(), g.knots_v()), unsnapped.coefs());
   ps::check_row_maps(factor_rows, f.dim(), g_rows, g.dim(), "surface product");
   if (!(removal_tol >= 0.0) || !std::isfinite(removal_tol))
     throw InputError("surface product: removal_tol is " + to_text(removal_tol) +

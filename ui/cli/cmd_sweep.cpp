@@ -4,7 +4,9 @@
 // when --tol is not met (the bundle is written, the report says by how much).
 #include <cstdio>
 #include <filesystem>
+#include <iostream>
 
+#include "jobs/project/sweep_project.h"
 #include "jobs/sweep/sweep_outputs.h"
 #include "src/error.h"
 #include "src/number_text.h"
@@ -17,9 +19,9 @@ namespace polarform::cli {
 namespace {
 
 struct SweepArgs {
-  std::string scan, out, kind = "auto", axis, center, tol, degree, corner_angle, threads = "2",
-                         interrogate;
-  bool skip_bad = false, quiet = false;
+  // Empty: not given (the project's value, or the default).
+  std::string scan, out, kind, axis, center, tol, degree, corner_angle, threads = "2", interrogate;
+  bool skip_bad = false, quiet = false, lenient = false;
 };
 
 Eigen::Vector3d vector3(const std::string& option, const std::string& text) {
@@ -27,10 +29,11 @@ Eigen::Vector3d vector3(const std::string& option, const std::string& text) {
   return Eigen::Vector3d(v[0], v[1], v[2]);
 }
 
-void run(const SweepArgs& a) {
-  SweepJobOptions o;
+// The options given on the command line, over `o` (a project's or the defaults).
+SweepJobOptions job_options(const SweepArgs& a, SweepJobOptions o) {
   constexpr SweepKind kinds[] = {SweepKind::automatic, SweepKind::revolution, SweepKind::extrusion};
-  o.kind = kinds[parse_choice("--kind", a.kind, {"auto", "revolution", "extrusion"})];
+  if (!a.kind.empty())
+    o.kind = kinds[parse_choice("--kind", a.kind, {"auto", "revolution", "extrusion"})];
   if (!a.axis.empty()) o.axis = vector3("--axis", a.axis);
   if (!a.center.empty()) o.center = vector3("--center", a.center);
   if (!a.tol.empty()) {
@@ -45,9 +48,25 @@ void run(const SweepArgs& a) {
       throw InputError("--corner-angle '" + a.corner_angle + "': expected degrees in (0, 180)");
   }
   o.threads = parse_int_pair("--threads", a.threads, 1, 256).first;
-  o.skip_bad = a.skip_bad;
-  o.interrogate = interrogate_option(a.interrogate);
-  const SweepJobResult r = run_sweep_job(a.scan, o);
+  o.skip_bad = o.skip_bad || a.skip_bad;
+  if (const auto q = interrogate_option(a.interrogate)) o.interrogate = q;
+  return o;
+}
+
+void run(const SweepArgs& a) {
+  // A project file (.xml) names the scan and its options; flags given here override them.
+  std::filesystem::path scan = a.scan;
+  SweepJobOptions defaults;
+  if (std::filesystem::path(a.scan).extension() == ".xml") {
+    std::vector<std::string> warnings;
+    const SweepProject project =
+        read_sweep_project(a.scan, warnings, unknown_names_policy(a.lenient));
+    for (const std::string& w : warnings) std::cerr << "polarform: warning: " << w << "\n";
+    scan = scan_path(project, a.scan);
+    defaults = sweep_job_options(project);
+  }
+  const SweepJobOptions o = job_options(a, defaults);
+  const SweepJobResult r = run_sweep_job(scan, o);
   const std::vector<std::string> files = write_sweep_outputs(r, a.out);
   const SweptFit& v = r.fit();
   if (!a.quiet) {
@@ -73,8 +92,8 @@ void run(const SweepArgs& a) {
     std::printf("wrote %zu files to %s (%.0f ms)\n", files.size(),
                 std::filesystem::absolute(a.out).string().c_str(), r.total_seconds * 1e3);
   }
-  if (!a.tol.empty() && !r.tolerance_met())
-    throw NumericalError("--tol " + a.tol + " mm not met: the max distance is " +
+  if (o.tolerance > 0 && !r.tolerance_met())
+    throw NumericalError("--tol " + number_text(o.tolerance) + " mm not met: the max distance is " +
                          number_text(v.error.max) + " mm (" + std::to_string(v.unexplained) +
                          " points farther; report in " + a.out + ")");
 }
@@ -96,7 +115,10 @@ void add_sweep_command(CLI::App& app) {
       "Writes surface.igs/.stp/.x3d, profile.igs/.stp/.dxf/.svg, solid.stp (an extrusion of one\n"
       "closed section), deviation.ply, preview.svg, report.json and report.html.\n"
       "Exit 1 when --tol is not met (files written), 2 on bad input.");
-  cmd->add_option("scan", args->scan, "point cloud or mesh file")->required();
+  cmd->add_option("scan", args->scan,
+                  "point cloud or mesh file, or a sweep project (.xml, see docs/file-formats.md) "
+                  "naming one")
+      ->required();
   cmd->add_option("--out", args->out, "output directory (created if missing)")->required();
   cmd->add_option("--kind", args->kind, "auto|revolution|extrusion (default auto)");
   cmd->add_option("--axis", args->axis,
@@ -112,6 +134,7 @@ void add_sweep_command(CLI::App& app) {
   cmd->add_option("--threads", args->threads, "worker threads (default 2)");
   cmd->add_flag("--skip-bad", args->skip_bad, "drop unreadable records instead of failing");
   cmd->add_flag("--quiet,-q", args->quiet, "print nothing but errors");
+  cmd->add_flag("--lenient", args->lenient, kLenientHelp);
   cmd->callback([args] { run(*args); });
 }
 

@@ -105,6 +105,31 @@ TEST(SymbolicProduct, NearlyCoincidentKnotsStayExact) {
   RecordProperty("max_relative_error", test::sci(worst));
 }
 
+// A factor knot an ulp off the circle's joint (a uniform F whose span ends are computed, not the
+// joint itself) is snapped onto it: no second break an ulp away (it made knots of multiplicity
+// 3 + 5 that the curve's reversal merged into 8 > degree + 1); the product still equals f·g.
+TEST(SymbolicProduct, KnotsAnUlpOffABreakAreSnappedOntoIt) {
+  std::mt19937 rng(65);
+  const double q = std::numbers::pi / 2;
+  const BSpline circle(2, test::rqb_circle_knots(), test::rqb_circle_coefs(1.0));
+  const double off = std::nextafter(3 * q, 10.0);
+  ASSERT_NE(off, 3 * q);
+  EXPECT_EQ(snap_knots({0, 0, off, 7}, circle.knots())[2], 3 * q);
+  EXPECT_EQ(snap_knots({0, 0, 3 * q + 1e-9, 7}, circle.knots())[2], 3 * q + 1e-9);  // real gap
+  const Knots U = clamped_knots(3, 0.0, 4 * q, {0.3, std::nextafter(q, 0.0), off, 5.0});
+  const BSpline f = test::random_bspline(rng, 3, U, 1);
+  const BSpline h = product(f, circle);
+  for (const Breakpoint& b : breakpoints(h.knots())) EXPECT_LE(b.multiplicity, h.degree() + 1);
+  EXPECT_EQ(multiplicity(h.knots(), 3 * q), 5);  // max(1 + 2, 2 + 3)
+  EXPECT_EQ(multiplicity(h.knots(), off), 0);
+  double worst = 0.0;
+  for (int k = 0; k <= 2000; ++k) {
+    const double u = 4 * q * k / 2000;
+    worst = std::max(worst, (h.point(u) - f.point(u)(0) * circle.point(u)).norm());
+  }
+  EXPECT_LT(worst, 1e-12 * f.coefs().cwiseAbs().maxCoeff());
+}
+
 TEST(SymbolicProduct, RowMapsAndOptionalRemoval) {
   std::mt19937 rng(62);
   const BSpline f = test::random_bspline(rng, 3, test::random_knots(rng, 3, 0.0, 1.0, 3, 2), 2);
