@@ -45,10 +45,9 @@ void validate(const SegmentSpec& spec) {
       if (!std::isfinite(e.velocity) || !std::isfinite(e.acceleration) || !std::isfinite(e.jerk))
         fail(spec, "an endpoint velocity, acceleration or jerk is not finite");
   }
-  if ((spec.polynomial_degree != 0 || !spec.interior.empty()) &&
-      (spec.law != MotionLaw::Polynomial || spec.kind == SegmentKind::RiseReturn))
-    fail(spec,
-         "a polynomial degree and interior constraints need law 'polynomial' on a rise or return");
+  // A degree and interior constraints belong to a polynomial rise or return; other laws ignore them
+  // (as they do the B-spline and SCCA settings), so that switching laws in the studio keeps them.
+  if (spec.law != MotionLaw::Polynomial || spec.kind == SegmentKind::RiseReturn) return;
   if (spec.polynomial_degree < 0 || spec.polynomial_degree > kMaxConstrainedPolynomialDegree)
     fail(spec, "polynomial degree " + std::to_string(spec.polynomial_degree) + " outside [1, " +
                    std::to_string(kMaxConstrainedPolynomialDegree) + "] (0: the least degree)");
