@@ -1,5 +1,6 @@
 #include "designers/cam/follower_dynamics.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -67,7 +68,8 @@ double line_contact_stress(double force, double width, double r1, double r2, dou
 }
 
 FollowerDynamics follower_dynamics(const std::vector<MotionSample>& motion, double rpm,
-                                   double roller_radius, const FollowerLoad& load) {
+                                   double roller_radius, const FollowerLoad& load,
+                                   double second_roller_radius) {
   check(load.mass >= 0 && std::isfinite(load.mass), "mass", load.mass, ">= 0 kg");
   check(load.spring_rate >= 0 && std::isfinite(load.spring_rate), "spring rate", load.spring_rate,
         ">= 0 N/mm");
@@ -106,6 +108,21 @@ FollowerDynamics follower_dynamics(const std::vector<MotionSample>& motion, doub
       d.contact_stress =
           line_contact_stress(d.force, load.contact_width, roller_radius, m.contour_radius,
                               load.youngs_modulus, load.poisson_ratio);
+    if (second_roller_radius > 0) {
+      if (load.arm)
+        check(m.second_lever > 0, "lever of the second roller's contact force about the pivot [mm]",
+              m.second_lever, "> 0");
+      const double q_load = d.force / per_load;  // Q
+      d.second_force = std::max(0.0, -q_load * (load.arm ? 1e3 / m.second_lever : 1.0));
+      if (load.contact_width > 0)
+        d.second_stress =
+            line_contact_stress(d.second_force, load.contact_width, second_roller_radius,
+                                m.second_contour_radius, load.youngs_modulus, load.poisson_ratio);
+      if (out.samples.empty() || d.second_force > out.largest_second_force.second_force)
+        out.largest_second_force = d;
+      if (out.samples.empty() || d.second_stress > out.largest_second_stress.second_stress)
+        out.largest_second_stress = d;
+    }
     if (out.samples.empty() || d.force < out.least_force.force) out.least_force = d;
     if (out.samples.empty() || std::abs(d.torque) > std::abs(out.largest_torque.torque))
       out.largest_torque = d;
@@ -119,8 +136,10 @@ FollowerDynamics follower_dynamics(const std::vector<MotionSample>& motion, doub
           out.min_spring_rate, -(inertia * w * w + damping * w + g.Q0 * per_load) / (q * per_load));
     out.samples.push_back(d);
   }
-  out.jumps = out.least_force.force < 0;
-  if (std::isfinite(fastest)) out.jump_rpm = fastest * 60 / (2 * std::numbers::pi);
+  out.conjugate = second_roller_radius > 0;
+  out.jumps = !out.conjugate && out.least_force.force < 0;
+  if (!out.conjugate && std::isfinite(fastest))
+    out.jump_rpm = fastest * 60 / (2 * std::numbers::pi);
   return out;
 }
 

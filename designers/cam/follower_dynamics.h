@@ -41,6 +41,10 @@ struct MotionSample {
   double s = 0.0, v = 0.0, a = 0.0;  // mm, mm/rad, mm/rad² (an arm's swing: °, °/rad, °/rad²)
   double contour_radius = 0.0;       // mm
   double lever = 0.0;                // mm, arms only: CamSample::arm_lever
+  // A conjugate pair's second roller (conjugate_cam.h): its contour's radius of curvature and, for
+  // an arm, its contact normal's moment arm about the pivot (mm, > 0).
+  double second_contour_radius = 0.0;
+  double second_lever = 0.0;
 };
 
 struct DynamicsSample {
@@ -48,6 +52,10 @@ struct DynamicsSample {
   double force = 0.0;           // N
   double torque = 0.0;          // N·m, on the camshaft
   double contact_stress = 0.0;  // MPa (0 without a contact width)
+  // A conjugate pair: the second roller's contact force (N, >= 0: it carries the load where the
+  // first's would be negative) and its Hertz stress.
+  double second_force = 0.0;
+  double second_stress = 0.0;
 };
 
 struct FollowerDynamics {
@@ -57,14 +65,23 @@ struct FollowerDynamics {
   std::optional<double> jump_rpm;  // the lowest speed at which it jumps; none if never
   double min_spring_rate =
       0.0;  // N/mm (arm: N·m/rad): keeps F >= 0 at the design speed (same preload)
+  // A conjugate pair (second_roller_radius > 0): the second cam holds the follower where the first
+  // would lose it, so it never jumps (jumps false, no jump_rpm); the second roller's largest force
+  // and stress and where.
+  bool conjugate = false;
+  DynamicsSample largest_second_force, largest_second_stress;
 };
 
 // At `rpm`; `roller_radius` (mm) is R₁ of the contact (0 for a flat face or a knife edge: then only
 // the contour's curvature counts). Throws InputError for a negative mass (inertia), rate, preload,
 // damping or width, a non-positive modulus, a Poisson ratio outside [0, 0.5), or an arm's sample
 // whose lever is not positive (the cam cannot push the arm there).
+// A conjugate pair's second roller of radius `second_roller_radius` (> 0; 0: none) carries the
+// load the first cannot, F₂ = −Q (translating) or −Q / second_lever (arm) where that is positive,
+// on the second contour (MotionSample::second_*): the same Hertz formula with its radii.
 FollowerDynamics follower_dynamics(const std::vector<MotionSample>& motion, double rpm,
-                                   double roller_radius, const FollowerLoad& load);
+                                   double roller_radius, const FollowerLoad& load,
+                                   double second_roller_radius = 0.0);
 
 // The Hertz line-contact stress of force F (N) over width L (mm) between radii r1, r2 (mm; +inf
 // flat, negative concave) of one material (E in MPa, ν): MPa.

@@ -20,7 +20,8 @@ enum class MotionLaw {
   ModifiedSine,       // "modified-sine"
   Polynomial345,      // "3-4-5"
   Polynomial4567,     // "4-5-6-7"
-  Polynomial,  // "polynomial": Hermite polynomial of minimal degree for the endpoint constraints
+  Polynomial,  // "polynomial": minimal-degree Hermite polynomial for the endpoint constraints, or
+               // of a stated degree with interior constraints (constrained_polynomial.h)
   BSpline,     // "bspline": smoothest B-spline meeting the endpoint constraints
   Scca,        // "scca": sine–constant–cosine acceleration with parameters (scca_law.h)
   ConstantAcceleration,  // "constant-acceleration": parabolic, SCCA (0, 1, 0)

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <tuple>
 #include <vector>
 
 #include "designers/cam/hermite_polynomial.h"
@@ -43,6 +44,21 @@ void validate(const SegmentSpec& spec) {
     for (const EndpointDerivatives& e : {spec.at_start, spec.at_end})
       if (!std::isfinite(e.velocity) || !std::isfinite(e.acceleration) || !std::isfinite(e.jerk))
         fail(spec, "an endpoint velocity, acceleration or jerk is not finite");
+  }
+  // A degree and interior constraints belong to a polynomial rise or return; other laws ignore them
+  // (as they do the B-spline and SCCA settings), so that switching laws in the studio keeps them.
+  if (spec.law != MotionLaw::Polynomial || spec.kind == SegmentKind::RiseReturn) return;
+  if (spec.polynomial_degree < 0 || spec.polynomial_degree > kMaxConstrainedPolynomialDegree)
+    fail(spec, "polynomial degree " + std::to_string(spec.polynomial_degree) + " outside [1, " +
+                   std::to_string(kMaxConstrainedPolynomialDegree) + "] (0: the least degree)");
+  for (const PolynomialConstraint& c : spec.interior) {
+    if (!(c.x > 0 && c.x < 1))
+      fail(spec, "interior constraint x = " + number_text(c.x) +
+                     " outside (0, 1); the ends are constrained by <start> and <end>");
+    if (c.derivative < 0 || c.derivative > kMaxConstraintDerivative)
+      fail(spec, "interior constraint derivative " + std::to_string(c.derivative) +
+                     " outside [0, " + std::to_string(kMaxConstraintDerivative) + "]");
+    if (!std::isfinite(c.value)) fail(spec, "an interior constraint value is not finite");
   }
 }
 
@@ -91,7 +107,10 @@ MotionSegment::MotionSegment(SegmentSpec spec, double start_level) : spec_(std::
       const int order = spec_.constrained_order;
       const std::vector<double> a = endpoint_values(start_level_, spec_.at_start, order);
       const std::vector<double> b = endpoint_values(end_level_, spec_.at_end, order);
-      if (spec_.law == MotionLaw::Polynomial)
+      if (spec_.law == MotionLaw::Polynomial &&
+          (spec_.polynomial_degree != 0 || !spec_.interior.empty()))
+        shape_ = solved_polynomial(signed_lift);
+      else if (spec_.law == MotionLaw::Polynomial)
         shape_ = hermite_polynomial(spec_.start, spec_.end, a, b);
       else
         shape_ = smoothest_bspline(spec_.start, spec_.end, a, b, spec_.bspline);
@@ -99,6 +118,33 @@ MotionSegment::MotionSegment(SegmentSpec spec, double start_level) : spec_(std::
   } catch (const InputError& e) {
     fail(spec_, e.what());
   }
+}
+
+// The polynomial law of the spec's degree from its end and interior constraints, all in
+// normalised units (S^(k) = s^(k)·β^k/lift) and solved on [0, 1], then mapped onto the segment.
+Polynomial MotionSegment::solved_polynomial(double signed_lift) {
+  const double beta = spec_.end - spec_.start;
+  const int order = spec_.constrained_order;
+  std::vector<PolynomialConstraint> all;
+  for (const auto& [x, level, e] :
+       {std::tuple{0.0, 0.0, spec_.at_start}, std::tuple{1.0, 1.0, spec_.at_end}}) {
+    const double values[4] = {level, e.velocity, e.acceleration, e.jerk};
+    double scale = 1.0 / signed_lift;  // β^k / lift
+    for (int k = 0; k <= order; ++k, scale *= beta)
+      all.push_back({x, k, values[k] * (k ? scale : 1.0)});
+  }
+  all.insert(all.end(), spec_.interior.begin(), spec_.interior.end());
+  const int degree =
+      spec_.polynomial_degree ? spec_.polynomial_degree : static_cast<int>(all.size()) - 1;
+  const ConstrainedPolynomial solved = constrained_polynomial(degree, all);
+  least_jerk_energy_ = solved.least_jerk_energy;
+  return Polynomial(spec_.start, spec_.end, solved.polynomial.coefficients())
+      .affine(signed_lift, start_level_);
+}
+
+int MotionSegment::polynomial_degree() const {
+  const auto* poly = std::get_if<Polynomial>(&shape_);
+  return poly && spec_.kind != SegmentKind::Dwell ? poly->degree() : 0;
 }
 
 // The table's normalised spline mapped onto the segment: knots θ = start + βx, values

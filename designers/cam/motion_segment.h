@@ -9,6 +9,7 @@
 #include <variant>
 #include <vector>
 
+#include "designers/cam/constrained_polynomial.h"
 #include "designers/cam/motion_law.h"
 #include "designers/cam/motion_table.h"
 #include "designers/cam/normalised_law.h"
@@ -47,6 +48,14 @@ struct SegmentSpec {
   int constrained_order = 2;
   EndpointDerivatives at_start;
   EndpointDerivatives at_end;
+  // Polynomial law on a rise or return only: the degree (0: the least degree the constraints
+  // determine, 2·(constrained_order + 1) + interior.size() − 1) and interior constraints in
+  // normalised units (constrained_polynomial.h). With either, the law is solved from the end
+  // constraints (s, then derivatives 1..constrained_order at both ends) and the interior ones:
+  // exactly when they number degree + 1, else the least-jerk-energy polynomial
+  // (constrained_polynomial.h).
+  int polynomial_degree = 0;
+  std::vector<PolynomialConstraint> interior;
   BSplineLawSettings bspline;  // B-spline law only
   SccaParameters scca;         // SCCA law only
   // Constant-velocity law only: the fraction of the segment in each cycloidal blend, in [0, ½]. 0
@@ -78,9 +87,16 @@ class MotionSegment {
   std::optional<BSplineFunction> exact() const;
   // Angles in (start, end) where the law's pieces join (where the jerk may jump), increasing.
   std::vector<double> joins() const;
+  // Polynomial laws (not a rise–return's): the degree, and whether fewer constraints than
+  // coefficients left it to the least jerk energy.
+  int polynomial_degree() const;
+  bool least_jerk_energy() const { return least_jerk_energy_; }
+  // s as a polynomial in t = (θ − start)/β (dwells and polynomial laws), else null.
+  const Polynomial* polynomial() const { return std::get_if<Polynomial>(&shape_); }
 
  private:
   BSplineFunction table_shape() const;
+  Polynomial solved_polynomial(double signed_lift);
 
   struct ScaledLaw {
     NormalisedLaw law;  // SCCA integrated once
@@ -89,6 +105,7 @@ class MotionSegment {
   SegmentSpec spec_;
   double start_level_ = 0.0;
   double end_level_ = 0.0;
+  bool least_jerk_energy_ = false;
   std::variant<Polynomial, ScaledLaw, BSplineFunction> shape_;
 };
 

@@ -186,6 +186,35 @@ std::optional<CompanionCurve> companion_curve(const CamProject& project, const P
   return c;
 }
 
+// A conjugate pair: both contours converted at share·ε, the double roller's centre-distance error
+// of the converted pair measured (conjugate_cam.h), and the share tightened until it holds <= ε.
+void convert_conjugate_pair(const CamProject& project, const PlateCam& cam,
+                            ConversionOptions conversion, const CamJobOptions& options,
+                            CamConversionStage& c) {
+  const double tolerance = project.conversion.tolerance;
+  double share = std::clamp(options.conjugate_share, kMinTolerance / tolerance, 1.0);
+  for (int attempt = 0;; ++attempt) {
+    conversion.tolerance = share * tolerance;
+    c.conversion = convert_polar_function(c.profile_function, conversion);
+    c.companion = companion_curve(project, cam, conversion, options);
+    const CentreDistanceError e = conjugate_centre_distance_error(
+        cam, *project.cam.conjugate, c.conversion.curve, c.conversion.base,
+        c.companion->conversion.curve, c.companion->conversion.base,
+        options.centre_distance_samples);
+    c.companion->centre_distance = ConjugateCentreDistance{e.max_error, e.theta, share, e.samples};
+    if (e.max_error <= tolerance) return;
+    if (attempt + 1 == kMaxConjugateAttempts)
+      throw NumericalError("conjugate pair: the double roller's centre-distance error " +
+                           number_text(e.max_error) + " mm at θ = " + degrees_text(e.theta) +
+                           " exceeds the tolerance " + number_text(tolerance) + " mm after " +
+                           std::to_string(kMaxConjugateAttempts) + " conversions (last at " +
+                           number_text(share) + "·ε)");
+    // The error scales about linearly with the share: aim 20 % under ε.
+    share *= std::min(0.8, 0.8 * tolerance / e.max_error);
+    share = std::max(share, kMinTolerance / tolerance);
+  }
+}
+
 CylindricalTrack cylindrical_track(const CamProject& project, const BarrelCam& barrel,
                                    const CamConversionStage& stage, double offset) {
   const CamDesign& d = project.cam;
@@ -249,8 +278,10 @@ namespace {
 
 // The follower's dynamics along the motion curves: a roller touches with its radius, a flat face
 // is flat, a knife edge has no line contact (no contact stress).
+// A conjugate pair's second roller also carries load: its contact on the second contour at the
+// same angles (segment by segment, as sample_plate).
 FollowerDynamics plate_dynamics(const CamDesignStage& design, const MotionCurves& m,
-                                const PlateCurves& curves) {
+                                const PlateCurves& curves, int per_revolution) {
   const Follower& follower = design.project.cam.follower;
   FollowerLoad load = *design.project.load;
   if (follower.kind == FollowerKind::KnifeEdge) load.contact_width = 0;
@@ -262,7 +293,20 @@ FollowerDynamics plate_dynamics(const CamDesignStage& design, const MotionCurves
                       curves.curvature[i] != 0 ? 1 / curves.curvature[i]
                                                : std::numeric_limits<double>::infinity(),
                       curves.arm_lever[i]});
-  return follower_dynamics(motion, design.project.cam.rpm, r1, load);
+  const auto& conjugate = design.project.cam.conjugate;
+  if (!conjugate) return follower_dynamics(motion, design.project.cam.rpm, r1, load);
+  const auto& cam = std::get<PlateCam>(design.cam);
+  const RollerImage second = conjugate_roller(cam, *conjugate);
+  const auto& segments = cam.program().segments();
+  std::size_t i = 0;
+  for (int k = 0; k < static_cast<int>(segments.size()); ++k)
+    for (double t : segment_angles(segments[k].start(), segments[k].end(), per_revolution)) {
+      const SecondContact c = conjugate_contact(cam, second, k, t);
+      motion.at(i).second_contour_radius = c.contour_radius;
+      motion.at(i++).second_lever = c.lever;
+    }
+  return follower_dynamics(motion, design.project.cam.rpm, r1, load,
+                           second_roller_radius(cam, *conjugate));
 }
 
 }  // namespace
@@ -275,7 +319,8 @@ CamAnalysisStage analyse_cam(const CamDesignStage& design, const CamJobOptions& 
   if (const auto* plate = std::get_if<PlateCam>(&design.cam)) {
     PlateCamAnalysis p{analyse(*plate, a.angles), {}};
     sample_plate(*plate, options.curve_samples, a.curves, p.curves);
-    if (design.project.load) a.dynamics = plate_dynamics(design, a.curves, p.curves);
+    if (design.project.load)
+      a.dynamics = plate_dynamics(design, a.curves, p.curves, options.curve_samples);
     a.cam = std::move(p);
   } else {
     const auto& barrel = std::get<BarrelCam>(design.cam);
@@ -330,10 +375,13 @@ CamConversionStage convert_cam(const CamDesignStage& design, const CamJobOptions
     // copy at each C0 arc junction, so that readers see one smooth curve.
     ConversionOptions conversion = project.conversion;
     conversion.compaction = Compaction::full;
-    if (project.cam.conjugate) conversion.tolerance *= kConjugateToleranceShare;
-    c.conversion = convert_polar_function(c.profile_function, conversion);
+    if (project.cam.conjugate) {
+      convert_conjugate_pair(project, *plate, conversion, options, c);
+    } else {
+      c.conversion = convert_polar_function(c.profile_function, conversion);
+      c.companion = companion_curve(project, *plate, conversion, options);
+    }
     c.profile = plate_profile(project, c, options, c.warnings);
-    c.companion = companion_curve(project, *plate, conversion, options);
   } else {
     const auto& barrel = std::get<BarrelCam>(design.cam);
     const double offset = track_height_offset(project.cam);

@@ -37,6 +37,10 @@ struct CamJobOptions {
   int error_samples = 4000;   // samples of the measured radial error along the profile
   int limited_degree = 3;     // degree of the degree-limited profile (profile_deg3.dxf)
   bool with_limited = true;   // compute the degree-limited profile
+  // Cam angles per revolution at which a conjugate pair's centre-distance error is measured.
+  int centre_distance_samples = 7200;
+  // The share of the tolerance a conjugate pair's contours are first converted at.
+  double conjugate_share = 0.35;
 };
 
 // ---- Stage 1: design -----------------------------------------------------------------------
@@ -139,12 +143,22 @@ struct CylindricalTrack {
 // the profile.
 enum class CompanionKind { GrooveOuterFlank, ConjugateContour };
 
+// A conjugate pair's measured centre-distance error (conjugate_cam.h) and the share of ε both
+// contours were converted at to keep it within ε.
+struct ConjugateCentreDistance {
+  double max_error = 0.0;  // mm
+  double theta = 0.0;      // rad, where
+  double share = 0.0;      // the contours' tolerance over ε
+  int samples = 0;
+};
+
 struct CompanionCurve {
   CompanionKind kind = CompanionKind::GrooveOuterFlank;
   PolarFunction function;              // R(ψ) of the exact curve
   PolarConversion conversion;          // of function
   ErrorCurve error;                    // measured along the NURBS curve
   std::optional<LimitedCurve> capped;  // when the exact degree exceeds the project's max-degree
+  std::optional<ConjugateCentreDistance> centre_distance;  // a conjugate pair's, measured
   // The curve the CAD files carry: the capped curve when there is one, else the exact one.
   const NurbsCurve2d& exported() const { return capped ? capped->curve : conversion.curve; }
 };
@@ -164,12 +178,16 @@ struct CamConversionStage {
 };
 
 // A conjugate pair keeps its rollers' centre distance within the tolerance ε: each contour's normal
-// error moves its roller by that error over cos φ, so both contours are converted at this share of
-// ε, which holds for pressure angles up to acos(2 × 0.35) = 45.6°.
-constexpr double kConjugateToleranceShare = 0.35;
+// error moves its roller by that error over cos φ, so both contours are first converted at this
+// share of ε (enough for pressure angles up to acos(2 × 0.35) = 45.6° in the worst case); then
+// the pair's centre-distance error is measured (conjugate_centre_distance_error) and, while it
+// exceeds ε, the share is cut in proportion and both are converted again, at most
+// kMaxConjugateAttempts times.
+constexpr double kConjugateToleranceShare = 0.35;  // CamJobOptions::conjugate_share default
+constexpr int kMaxConjugateAttempts = 6;
 
 // Throws InputError (a tolerance below the converter's floor, …) / NumericalError from the
-// converter. A conjugate pair's contours are converted at kConjugateToleranceShare·ε.
+// converter, or when a conjugate pair's centre distance cannot be brought within ε.
 CamConversionStage convert_cam(const CamDesignStage& design, const CamJobOptions& options = {});
 
 // ---- The whole job -------------------------------------------------------------------------

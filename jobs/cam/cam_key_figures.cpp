@@ -68,6 +68,8 @@ std::vector<KeyFigure> cam_design_inputs(const CamDesignStage& design) {
                                               " from the first about the pivot"
                                         : "second roller " + mm(d.conjugate->roller_distance) +
                                               " beyond the first on the follower axis"});
+  if (d.conjugate && d.conjugate->roller_radius > 0)
+    out.push_back({"second roller radius", mm(d.conjugate->roller_radius)});
   out.push_back({"speed", number_text(d.rpm) + " rev/min, " +
                               (d.rotation == Rotation::CounterClockwise ? "counter-clockwise"
                                                                         : "clockwise")});
@@ -92,8 +94,11 @@ std::vector<KeyFigure> cam_dynamics_figures(const FollowerDynamics& dyn, const F
   std::string force =
       number_text(dyn.least_force.force) + " N at θ = " + degrees_text(dyn.least_force.theta);
   force += dyn.jumps ? ": the follower JUMPS" : "";
-  force +=
-      dyn.jump_rpm ? "; it jumps from " + number_text(*dyn.jump_rpm) + " rpm" : "; it never jumps";
+  if (dyn.conjugate)
+    force += " (below 0 the second cam holds the follower)";
+  else
+    force += dyn.jump_rpm ? "; it jumps from " + number_text(*dyn.jump_rpm) + " rpm"
+                          : "; it never jumps";
   out.push_back({"min contact force", force});
   out.push_back(
       {load.arm ? "least torsion rate for contact" : "least spring rate for contact",
@@ -104,6 +109,15 @@ std::vector<KeyFigure> cam_dynamics_figures(const FollowerDynamics& dyn, const F
     out.push_back(
         {"max contact stress", number_text(dyn.largest_stress.contact_stress) +
                                    " MPa at θ = " + degrees_text(dyn.largest_stress.theta)});
+  if (dyn.conjugate) {
+    out.push_back({"second roller max force",
+                   number_text(dyn.largest_second_force.second_force) +
+                       " N at θ = " + degrees_text(dyn.largest_second_force.theta)});
+    if (dyn.largest_second_stress.second_stress > 0)
+      out.push_back({"second roller max stress",
+                     number_text(dyn.largest_second_stress.second_stress) +
+                         " MPa at θ = " + degrees_text(dyn.largest_second_stress.theta)});
+  }
   return out;
 }
 
@@ -165,6 +179,11 @@ std::vector<KeyFigure> cam_key_results(const CamDesignStage& design,
                      "degree " + std::to_string(k.curve.degree()) + ", " +
                          std::to_string(k.curve.size()) + " control points, measured max radial " +
                          mm(k.max_radial_error) + ", max normal " + mm(k.max_normal_error)});
+      if (const auto& cd = second->centre_distance)
+        out.push_back({"rollers' centre distance", "measured max error " + mm(cd->max_error) +
+                                                       " at θ = " + degrees_text(cd->theta) +
+                                                       " (contours at " + number_text(cd->share) +
+                                                       " × the tolerance)"});
     }
   }
   return out;

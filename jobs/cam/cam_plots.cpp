@@ -336,20 +336,25 @@ namespace {
 
 // One quantity of the dynamics against cam angle, with the segment boundaries; `decorate` adds
 // to the plot.
+// `second`: a conjugate pair's second-roller value, drawn beside the first's.
 Figure dynamics_figure(const CamDesignStage& d, const CamAnalysisStage& a, const std::string& title,
                        const std::string& y_label, double DynamicsSample::*value,
-                       const std::function<void(Plot&)>& decorate = {}) {
+                       const std::function<void(Plot&)>& decorate = {},
+                       double DynamicsSample::*second = nullptr) {
   Figure f(900, 420);
   f.title = title + " at " + number_text(d.project.cam.rpm) + " rpm";
   Plot& plot = f.add_panel();
   plot.y_label = y_label;
   cam_angle_axis(plot);
-  std::vector<double> x, y;
+  const bool pair = second && a.dynamics.value().conjugate;
+  std::vector<double> x, y, y2;
   for (const DynamicsSample& s : a.dynamics.value().samples) {
     x.push_back(s.theta * kDegreesPerRadian);
     y.push_back(s.*value);
+    if (pair) y2.push_back(s.*second);
   }
-  plot.add(series("", std::move(x), std::move(y)));
+  if (pair) plot.add(series("second roller", x, std::move(y2), Series::Style::dashed));
+  plot.add(series(pair ? "first roller" : "", std::move(x), std::move(y)));
   mark_segments(d, plot, true);
   if (decorate) decorate(plot);
   return f;
@@ -360,12 +365,14 @@ Figure dynamics_figure(const CamDesignStage& d, const CamAnalysisStage& a, const
 Figure contact_force_figure(const CamDesignStage& d, const CamAnalysisStage& a) {
   const FollowerDynamics& dyn = a.dynamics.value();
   return dynamics_figure(
-      d, a, "Contact force", "contact force [N]", &DynamicsSample::force, [&](Plot& plot) {
+      d, a, "Contact force", "contact force [N]", &DynamicsSample::force,
+      [&](Plot& plot) {
         plot.add_horizontal_line(0.0, dyn.jumps ? "contact lost below" : "", kJumpColor);
         if (dyn.jumps)
           plot.add_highlight(dyn.least_force.theta * kDegreesPerRadian, dyn.least_force.force,
                              "the follower jumps: " + number_text(dyn.least_force.force) + " N");
-      });
+      },
+      &DynamicsSample::second_force);
 }
 
 Figure camshaft_torque_figure(const CamDesignStage& d, const CamAnalysisStage& a) {
@@ -374,7 +381,7 @@ Figure camshaft_torque_figure(const CamDesignStage& d, const CamAnalysisStage& a
 
 Figure contact_stress_figure(const CamDesignStage& d, const CamAnalysisStage& a) {
   return dynamics_figure(d, a, "Hertz contact stress", "contact stress [MPa]",
-                         &DynamicsSample::contact_stress);
+                         &DynamicsSample::contact_stress, {}, &DynamicsSample::second_stress);
 }
 
 }  // namespace polarform

@@ -55,6 +55,21 @@ void add_design_fields(json& j, const CamDesignStage& r) {
     if (s.spec().kind != SegmentKind::Dwell && s.spec().law == MotionLaw::Scca)
       j["segments"].back()["scca"] = {
           {"b", s.spec().scca.b}, {"c", s.spec().scca.c}, {"d", s.spec().scca.d}};
+    if (s.spec().kind != SegmentKind::Dwell && s.spec().law == MotionLaw::Polynomial &&
+        s.polynomial()) {
+      // The normalised law's peak factors from the polynomial itself (in t = x, per unit lift).
+      const PolynomialPeaks peaks = polynomial_peaks(*s.polynomial());
+      const double lift = s.spec().lift;
+      j["segments"].back()["polynomial"] = {
+          {"degree", s.polynomial_degree()},
+          {"interior_constraints", s.spec().interior.size()},
+          {"solved_by", s.least_jerk_energy()                      ? "least jerk energy"
+                        : s.spec().kind == SegmentKind::RiseReturn ? "3-4-5-6 single-dwell"
+                                                                   : "constraints (exact)"},
+          {"cv", peaks.cv / lift},
+          {"ca", peaks.ca / lift},
+          {"cj", peaks.cj / lift}};
+    }
   }
   j["continuity"] = json::array();
   for (const ContinuityIssue& i : r.continuity)
@@ -82,6 +97,13 @@ void add_companion_fields(json& j, const CamDesign& d, const CompanionCurve& c) 
                        ? json{{"arm_angle_deg", d.conjugate->arm_angle * kDegreesPerRadian},
                               {"arm_length_mm", d.conjugate->arm_length}}
                        : json{{"roller_distance_mm", d.conjugate->roller_distance}};
+  j["conjugate"]["roller_radius_mm"] =
+      d.conjugate->roller_radius > 0 ? d.conjugate->roller_radius : d.follower.roller_radius;
+  if (c.centre_distance)
+    j["conjugate"]["centre_distance"] = {{"max_error_mm", c.centre_distance->max_error},
+                                         {"at_deg", c.centre_distance->theta * kDegreesPerRadian},
+                                         {"tolerance_share", c.centre_distance->share},
+                                         {"samples", c.centre_distance->samples}};
   j["conjugate"]["contour"] = std::move(curve);
 }
 
@@ -166,6 +188,12 @@ void add_analysis_fields(json& j, const CamDesignStage& d, const CamAnalysisStag
          {"max_torque_at_deg", dyn->largest_torque.theta * kDegreesPerRadian},
          {"max_contact_stress_mpa", dyn->largest_stress.contact_stress},
          {"max_contact_stress_at_deg", dyn->largest_stress.theta * kDegreesPerRadian}});
+    if (dyn->conjugate)
+      j["dynamics"]["second_roller"] = {
+          {"max_contact_force_n", dyn->largest_second_force.second_force},
+          {"max_contact_force_at_deg", dyn->largest_second_force.theta * kDegreesPerRadian},
+          {"max_contact_stress_mpa", dyn->largest_second_stress.second_stress},
+          {"max_contact_stress_at_deg", dyn->largest_second_stress.theta * kDegreesPerRadian}};
   }
 }
 

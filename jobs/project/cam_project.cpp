@@ -64,6 +64,32 @@ void read_constraints(const XmlElementReader& seg, SegmentSpec& spec, const std:
   spec.constrained_order = order;
 }
 
+// A polynomial law's degree="N" and <constraint x="" derivative="" value=""/> children
+// (constrained_polynomial.h): x in (0, 1), S^(derivative)(x) = value in normalised units.
+void read_polynomial(const XmlElementReader& seg, SegmentSpec& spec, const std::string& file,
+                     std::vector<UnknownName>& unknown) {
+  if (seg.has("degree")) {
+    spec.polynomial_degree = seg.integer("degree", 0);
+    if (spec.polynomial_degree < 1 || spec.polynomial_degree > kMaxConstrainedPolynomialDegree)
+      seg.fail("degree", "an integer in [1, " + std::to_string(kMaxConstrainedPolynomialDegree) +
+                             "], or no degree for the least one the constraints determine");
+  }
+  for (const XMLElement* e : seg.children("constraint")) {
+    const XmlElementReader r(e, file);
+    PolynomialConstraint c;
+    c.x = r.number("x");
+    if (!(c.x > 0 && c.x < 1))
+      r.fail("x", "a normalised position strictly inside (0, 1) (the ends are <start> and <end>)");
+    c.derivative = r.integer("derivative", 0);
+    if (c.derivative < 0 || c.derivative > kMaxConstraintDerivative)
+      r.fail("derivative", "an integer in [0, " + std::to_string(kMaxConstraintDerivative) +
+                               "] (0: S, 1: S', 2: S'', ...)");
+    c.value = r.number("value");
+    r.collect_unknown_names(unknown);
+    spec.interior.push_back(c);
+  }
+}
+
 SegmentSpec read_segment(const XmlElementReader& r, double from, double level,
                          const std::string& file, std::vector<UnknownName>& unknown) {
   SegmentSpec s;
@@ -87,6 +113,8 @@ SegmentSpec read_segment(const XmlElementReader& r, double from, double level,
   if ((s.law == MotionLaw::Polynomial && s.kind != SegmentKind::RiseReturn) ||
       s.law == MotionLaw::BSpline)
     read_constraints(r, s, file, unknown);
+  if (s.law == MotionLaw::Polynomial && s.kind != SegmentKind::RiseReturn)
+    read_polynomial(r, s, file, unknown);
   if (s.law ==
       MotionLaw::ConstantVelocity) {  // the blend fraction at each end (constant_velocity_law.h)
     s.blend = r.positive("blend", s.blend, true);
@@ -157,7 +185,8 @@ void read_arm(const XmlElementReader& r, Follower& f) {
 }
 
 // <conjugate roller-distance="mm"/> (translating roller) or <conjugate arm-angle="deg"
-// arm-length="mm"/> (oscillating roller): the second cam's roller (conjugate_cam.h).
+// arm-length="mm"/> (oscillating roller), both with an optional roller-radius="mm" (default: the
+// first roller's): the second cam's roller (conjugate_cam.h).
 ConjugateFollower read_conjugate(const XmlElementReader& r, const CamDesign& d,
                                  std::vector<UnknownName>& unknown) {
   ConjugateFollower c;
@@ -174,6 +203,7 @@ ConjugateFollower read_conjugate(const XmlElementReader& r, const CamDesign& d,
                      "a " +
                      std::string(follower_kind_name(d.follower.kind)) + " follower");
   }
+  c.roller_radius = r.positive("roller-radius", 0.0, true);  // 0: the first roller's
   r.collect_unknown_names(unknown);
   return c;
 }
@@ -276,7 +306,10 @@ void to_millimetres(CamDesign& d, double unit) {
                          &d.follower.pivot_distance, &d.follower.arm_length,
                          &d.follower.face_offset, &d.cylinder_radius, &d.z0, &d.groove_depth})
     *length *= unit;
-  if (d.conjugate) d.conjugate->roller_distance *= unit, d.conjugate->arm_length *= unit;
+  if (d.conjugate)
+    for (double* length :
+         {&d.conjugate->roller_distance, &d.conjugate->arm_length, &d.conjugate->roller_radius})
+      *length *= unit;
   if (is_oscillating(d.follower.kind)) return;
   for (SegmentSpec& s : d.segments) {
     s.lift *= unit;
@@ -381,6 +414,7 @@ std::string cam_project_xml(const CamProject& p) {
     } else {
       attr("roller-distance", number(d.conjugate->roller_distance));
     }
+    if (d.conjugate->roller_radius > 0) attr("roller-radius", number(d.conjugate->roller_radius));
     out << "/>\n";
   }
   for (const SegmentSpec& s : d.segments) {
@@ -407,6 +441,8 @@ std::string cam_project_xml(const CamProject& p) {
       attr("file", s.table.file);
       attr("ends", s.table.ends == TableEnds::Rest ? "rest" : "free");
     }
+    if (s.kind != SegmentKind::Dwell && s.law == MotionLaw::Polynomial && s.polynomial_degree > 0)
+      attr("degree", std::to_string(s.polynomial_degree));
     if (s.kind != SegmentKind::Dwell && s.law == MotionLaw::BSpline) {
       attr("degree", std::to_string(s.bspline.degree));
       attr("control-values", std::to_string(s.bspline.control_values));
@@ -424,6 +460,14 @@ std::string cam_project_xml(const CamProject& p) {
       if (s.constrained_order >= 3) attr("j", number(e->jerk));
       out << "/>\n";
     }
+    if (s.law == MotionLaw::Polynomial)
+      for (const PolynomialConstraint& c : s.interior) {
+        out << "      <constraint";
+        attr("x", number(c.x));
+        attr("derivative", std::to_string(c.derivative));
+        attr("value", number(c.value));
+        out << "/>\n";
+      }
     out << "    </segment>\n";
   }
   out << "  </cam>\n  <conversion";

@@ -55,6 +55,44 @@ bool endpoint_inputs(const char* id, EndpointDerivatives& e, int order, const st
   return changed;
 }
 
+// A polynomial law's degree (0: the least the constraints determine) and its interior
+// constraints S^(k)(x) = value in normalised units (constrained_polynomial.h).
+bool polynomial_inputs(SegmentSpec& s) {
+  bool changed = false;
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8);
+  changed |=
+      input_int("polynomial degree", s.polynomial_degree, 0, kMaxConstrainedPolynomialDegree);
+  help_marker(
+      "0: the least degree the constraints determine. More coefficients than constraints: the "
+      "polynomial of least jerk energy; fewer: an error.");
+  int remove = -1;
+  for (std::size_t i = 0; i < s.interior.size(); ++i) {
+    PolynomialConstraint& c = s.interior[i];
+    ImGui::PushID(static_cast<int>(i));
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 5);
+    changed |= input_number("x", c.x, 0.05);
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 5);
+    changed |= input_int("S^(k), k", c.derivative, 0, kMaxConstraintDerivative);
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 5);
+    changed |= input_number("=", c.value, 0.05);
+    ImGui::SameLine();
+    if (ImGui::SmallButton("remove")) remove = static_cast<int>(i);
+    ImGui::PopID();
+  }
+  if (remove >= 0) {
+    s.interior.erase(s.interior.begin() + remove);
+    changed = true;
+  }
+  if (ImGui::SmallButton("add interior constraint")) {
+    s.interior.push_back({});
+    changed = true;
+  }
+  help_marker("Normalised: x = (θ − start)/β in (0, 1), S = s/lift, S^(k) = s^(k)·β^k/lift.");
+  return changed;
+}
+
 }  // namespace
 
 bool SegmentTable::draw(std::vector<SegmentSpec>& segments, MessageLog& log,
@@ -236,6 +274,8 @@ bool SegmentTable::draw_details(SegmentSpec& s) {
     changed |= endpoint_inputs("end", s.at_end, s.constrained_order, unit_);
     ImGui::EndTable();
   }
+  if (s.law == MotionLaw::Polynomial && s.kind != SegmentKind::RiseReturn)
+    changed |= polynomial_inputs(s);
   if (s.law == MotionLaw::BSpline) {
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8);
     changed |= input_int("B-spline degree", s.bspline.degree, 1, 9);

@@ -107,6 +107,11 @@ TEST(ConjugateCamJob, ASecondArmDrivesTheOscillatingFollowerBack) {
   EXPECT_LE(d1.worst(), tol);
   EXPECT_LE(d2.worst(), tol);
   RecordProperty("second cam deviation mm", std::to_string(d2.worst()));
+  // The play or interference at the second roller, measured by the job (conjugate_cam.h).
+  ASSERT_TRUE(r.conversion.companion->centre_distance);
+  EXPECT_LE(r.conversion.companion->centre_distance->max_error, tol);
+  RecordProperty("measured second roller play mm",
+                 std::to_string(r.conversion.companion->centre_distance->max_error));
 }
 
 std::string error_of(const CamProject& p) {

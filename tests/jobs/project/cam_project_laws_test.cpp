@@ -126,5 +126,66 @@ TEST(CamProjectLaws, BadValuesNameTheirAttributeOrTableLine) {
   }
 }
 
+// A polynomial law of a stated degree with interior constraints (constrained_polynomial.h): read,
+// written back and read again to the same segments; the report's peak factors of a degree-5 law
+// from rest-to-rest ends are the 3-4-5 law's closed forms.
+TEST(CamProjectLaws, PolynomialDegreeAndInteriorConstraintsRoundTrip) {
+  const std::string segments =
+      "<segment kind=\"rise\" law=\"polynomial\" degree=\"7\" lift=\"10\" to=\"120\">\n"
+      "  <start v=\"0\" a=\"0\"/>\n  <end v=\"0\" a=\"0\"/>\n"
+      "  <constraint x=\"0.4\" value=\"0.3\"/>\n"
+      "  <constraint x=\"0.6\" derivative=\"1\" value=\"1.9\"/>\n"
+      "</segment>\n"
+      "<segment kind=\"dwell\" to=\"180\"/>\n"
+      "<segment kind=\"return\" law=\"polynomial\" degree=\"5\" to=\"300\"/>\n"
+      "<segment kind=\"dwell\" to=\"360\"/>\n";
+  std::vector<std::string> warnings;
+  const CamProject p = parse_cam_project(cam(segments), "cam.xml", warnings);
+  EXPECT_TRUE(warnings.empty());
+  const SegmentSpec& rise = p.cam.segments[0];
+  EXPECT_EQ(rise.polynomial_degree, 7);
+  ASSERT_EQ(rise.interior.size(), 2u);
+  EXPECT_EQ(rise.interior[0], (PolynomialConstraint{0.4, 0, 0.3}));
+  EXPECT_EQ(rise.interior[1], (PolynomialConstraint{0.6, 1, 1.9}));
+  EXPECT_EQ(p.cam.segments[2].polynomial_degree, 5);
+  const std::string xml = cam_project_xml(p);
+  EXPECT_NE(xml.find("law=\"polynomial\" lift=\"10\" from=\"0\" to=\""), std::string::npos) << xml;
+  EXPECT_NE(xml.find("\" degree=\"7\">"), std::string::npos) << xml;
+  EXPECT_NE(xml.find("<constraint x=\"0.6\" derivative=\"1\" value=\"1.9\"/>"), std::string::npos)
+      << xml;
+  const CamProject again = parse_cam_project(xml, "cam.xml", warnings);
+  EXPECT_EQ(again.cam, p.cam);
+  EXPECT_EQ(cam_project_xml(again), xml);
+}
+
+TEST(CamProjectLaws, PolynomialCountsAndFieldsAreNamed) {
+  const std::string rest = "<segment kind=\"return\" to=\"360\"/>\n";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"<segment kind=\"rise\" law=\"polynomial\" degree=\"4\" lift=\"10\" to=\"180\"/>\n" + rest,
+       "segment 'segment 1': over-determined: 6 constraints for the 5 coefficients of a degree-4 "
+       "polynomial"},
+      {"<segment kind=\"rise\" law=\"polynomial\" degree=\"0\" lift=\"10\" to=\"180\"/>\n" + rest,
+       "cam.xml:3: <segment> attribute 'degree': expected an integer in [1, 20]"},
+      {"<segment kind=\"rise\" law=\"polynomial\" lift=\"10\" to=\"180\">"
+       "<constraint x=\"1\" value=\"1\"/></segment>\n" +
+           rest,
+       "<constraint> attribute 'x': expected a normalised position strictly inside (0, 1)"},
+      {"<segment kind=\"rise\" law=\"polynomial\" lift=\"10\" to=\"180\">"
+       "<constraint x=\"0.5\" derivative=\"7\" value=\"1\"/></segment>\n" +
+           rest,
+       "<constraint> attribute 'derivative': expected an integer in [0, 4]"},
+  };
+  for (const auto& [segments, expected] : cases) {
+    std::vector<std::string> warnings;
+    try {
+      parse_cam_project(cam(segments), "cam.xml", warnings);
+      ADD_FAILURE() << segments;
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find(expected), std::string::npos) << what;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace polarform

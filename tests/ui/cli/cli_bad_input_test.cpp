@@ -106,7 +106,7 @@ std::vector<BadProject> bad_projects() {
       // y0 + stroke + Rr = 50 + 20 + 10 = 80 mm: the second roller would reach the cam centre.
       {"second_roller_at_the_centre", edited("</cam>", "<conjugate roller-distance=\"75\"/></cam>"),
        "conjugate roller-distance 75 mm is too small: the second roller would reach the cam "
-       "centre; the second cam's base radius D − (y0 + stroke) − Rr must be > 0, so D > 80 mm"},
+       "centre; the second cam's base radius D − (y0 + stroke) − Rr2 must be > 0, so D > 80 mm"},
       {"conjugate_and_groove",
        edited("rpm=\"300\"", "rpm=\"300\" groove-depth=\"5\"",
               edited("</cam>", "<conjugate roller-distance=\"120\"/></cam>")),
