@@ -97,6 +97,7 @@ CylindricalFit fit_cylindrical(const Eigen::Matrix3Xd& points, const Cylindrical
                               surface.size_v(), trimmed.kept, threads, trimmed.unconverged, times);
   rep.outliers = std::move(outliers);
   rep.net = std::move(trimmed.net);
+  rep.restarted = trimmed.restarted;
   rep.revolution = std::move(trimmed.revolution);
   rep.times.total = total.lap();
   progress(1.0);
