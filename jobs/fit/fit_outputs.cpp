@@ -196,6 +196,32 @@ std::string outlier_summary(const FitJobResult& r) {
   return text + "); the distances are of the " + std::to_string(rep.error.count) + " points kept.";
 }
 
+namespace {
+
+// Every input point's closest-point search (point_distances.h): none is dropped; the counts say how
+// many converged from the synchronized start, after the restart, or not at all, and why.
+json foot_points_json(const FitReport& rep) {
+  const std::size_t n = static_cast<std::size_t>(rep.signed_distance.size());
+  json j{{"searched", n},
+         {"converged_first", n - std::min(n, rep.restarted + rep.unconverged)},
+         {"restarted", rep.restarted},
+         {"unconverged", rep.unconverged},
+         {"dropped", 0}};
+  j["restart"] =
+      "a search that hits the iteration limit from the synchronized parameters is restarted from "
+      "the closest of a 9 x 9 parameter grid spanning a fifth of the domain around them";
+  j["unconverged_reason"] =
+      rep.unconverged == 0
+          ? json(nullptr)
+          : json(
+                "the Gauss-Newton foot-point iteration hit its iteration limit from both starts "
+                "(e.g. a point near a pole or fold, or far from the surface); the distance of "
+                "the closest point it reached is kept in the statistics, not dropped");
+  return j;
+}
+
+}  // namespace
+
 json fit_report_fields(const FitJobResult& r) {
   const FitReport& rep = r.report();
   json j;
@@ -226,6 +252,13 @@ json fit_report_fields(const FitJobResult& r) {
     for (const FrameCandidate& c : f.frame_candidates) {
       json e{{"name", c.name}, {"origin", vec(c.origin)}, {"axis", vec(c.axis)}, {"how", c.how}};
       e["rms_mm"] = c.rms >= 0.0 ? json(c.rms) : json(nullptr);
+      if (c.rms >= 0.0) {
+        e["F"] = c.rotational ? "F(u) alone" : "F(u, v)";
+        e["revolution_p_value"] = c.p_value >= 0.0 ? json(c.p_value) : json(nullptr);
+        e["coefficients"] = c.coefficients;
+        e["points"] = c.points;
+      }
+      e["chosen"] = c.origin.isApprox(fr.frame.origin) && c.axis.isApprox(fr.frame.axes.col(2));
       if (!c.failure.empty()) e["failure"] = c.failure;
       candidates.push_back(std::move(e));
     }
@@ -260,6 +293,7 @@ json fit_report_fields(const FitJobResult& r) {
   j["revolution"] = revolution_json(rep.revolution);
   j["error_mm"] = stats(rep.error);
   j["error_mm"]["unconverged_foot_points"] = rep.unconverged;
+  j["foot_points"] = foot_points_json(rep);
   j["error_kind"] = "true closest-point distance from each input point to the fitted geometry";
   j["radial_error_mm"] = stats(rep.radial);
   j["deviation_color_limit_mm"] = deviation_color_limit(r);

@@ -33,7 +33,7 @@ CylindricalFit fit_cylindrical(const Eigen::Matrix3Xd& points, const Cylindrical
   times.sync = clock.lap();
 
   SingleValuedness check;
-  const Eigen::VectorXd arc = cc.r.mean() * cc.theta;  // r̄·θ: comparable with z
+  Eigen::VectorXd arc = cc.r.mean() * cc.theta;  // r̄·θ: comparable with z
   const auto folds = [&] {
     const double rbar = cc.r.mean();
     std::ostringstream msg;
@@ -67,7 +67,10 @@ CylindricalFit fit_cylindrical(const Eigen::Matrix3Xd& points, const Cylindrical
   Samples samples;
   samples.u = (cc.z.array() - z0) / (z1 - z0);
   samples.v = synchronize(base.azimuth(), cc.theta, threads);
-  samples.value = cc.r;
+  samples.value = std::move(cc.r);
+  // The coordinates are in the samples now: 320 MB fewer at 10^7 points during the fit.
+  cc = CylindricalCoordinates{};
+  arc = Eigen::VectorXd();
   times.sync += clock.lap();
 
   const FunctionSpace space{0.0,
@@ -97,6 +100,7 @@ CylindricalFit fit_cylindrical(const Eigen::Matrix3Xd& points, const Cylindrical
                               surface.size_v(), trimmed.kept, threads, trimmed.unconverged, times);
   rep.outliers = std::move(outliers);
   rep.net = std::move(trimmed.net);
+  rep.restarted = trimmed.restarted;
   rep.revolution = std::move(trimmed.revolution);
   rep.times.total = total.lap();
   progress(1.0);

@@ -34,23 +34,40 @@ double abs_quantile(const Eigen::VectorXd& d, double q) {
   return value_at_rank(a, a.size(), rank_of(q, a.size()));
 }
 
-ErrorStats error_stats(const Eigen::VectorXd& d) {
+namespace {
+
+// The statistics of the magnitudes a[0, n) (reordered in place).
+ErrorStats magnitude_stats(double* a, std::size_t n) {
   ErrorStats s;
-  s.count = static_cast<std::size_t>(d.size());
-  if (s.count == 0) return s;
-  std::vector<double> a = absolute(d);
+  s.count = n;
+  if (n == 0) return s;
   double sum = 0.0, sum2 = 0.0;
-  for (double x : a) {
-    sum += x;
-    sum2 += x * x;
-    s.max = std::max(s.max, x);
+  for (std::size_t i = 0; i < n; ++i) {
+    sum += a[i];
+    sum2 += a[i] * a[i];
+    s.max = std::max(s.max, a[i]);
   }
-  s.mean = sum / static_cast<double>(s.count);
-  s.rms = std::sqrt(sum2 / static_cast<double>(s.count));
-  const std::size_t r99 = rank_of(0.99, s.count), r95 = rank_of(0.95, s.count);
-  s.p99 = value_at_rank(a, s.count, r99);
-  s.p95 = value_at_rank(a, r99, r95);  // after the first pass a[0, r99) holds the r99 smallest
+  s.mean = sum / static_cast<double>(n);
+  s.rms = std::sqrt(sum2 / static_cast<double>(n));
+  const std::size_t r99 = rank_of(0.99, n), r95 = rank_of(0.95, n);
+  std::nth_element(a, a + (r99 - 1), a + n);
+  s.p99 = a[r99 - 1];
+  std::nth_element(a, a + (r95 - 1), a + r99);  // a[0, r99) holds the r99 smallest
+  s.p95 = a[r95 - 1];
   return s;
+}
+
+}  // namespace
+
+ErrorStats error_stats(const Eigen::VectorXd& d) {
+  if (d.size() == 0) return ErrorStats{};
+  std::vector<double> a = absolute(d);
+  return magnitude_stats(a.data(), a.size());
+}
+
+ErrorStats error_stats(Eigen::VectorXd&& d) {
+  d = d.cwiseAbs();
+  return magnitude_stats(d.data(), static_cast<std::size_t>(d.size()));
 }
 
 }  // namespace polarform

@@ -19,6 +19,8 @@ struct ErrorStats {
 
 // Statistics of |d| over the entries of d (signed distances). Empty input gives all zeros.
 ErrorStats error_stats(const Eigen::VectorXd& d);
+// The same of a temporary, its magnitudes taken in place (no copy: 80 MB fewer at 10^7 points).
+ErrorStats error_stats(Eigen::VectorXd&& d);
 
 // The nearest-rank q-quantile (0 < q <= 1) of |d| over the entries of d, in O(n).
 double abs_quantile(const Eigen::VectorXd& d, double q);

@@ -20,10 +20,12 @@ Eigen::VectorXd synchronize(const BaseCircle& circle, const Eigen::VectorXd& ang
 FunctionFitOptions with_progress_range(const FunctionFitOptions& opt, double from, double to);
 
 // An ErrorMeasure of true distances from `local` points (3 x n, synchronized parameters u, v) to
-// the geometry `make(F)` builds; the count of unconverged foot points lands in *unconverged.
+// the geometry `make(F)` builds; the count of unconverged foot points lands in *unconverged, that
+// of the foot points found only after a restart in *restarted (when given).
 template <class MakeGeometry>
-ErrorMeasure distance_measure(MakeGeometry make, const Eigen::Matrix3Xd& local, const Samples& samples,
-                              int threads, std::size_t* unconverged);
+ErrorMeasure distance_measure(MakeGeometry make, const Eigen::Matrix3Xd& local,
+                              const Samples& samples, int threads, std::size_t* unconverged,
+                              std::size_t* restarted = nullptr);
 
 // The report of a fit: F's degrees and net, the NURBS's, λ, errors (geometric moved out of
 // fit.errors, radial recomputed), timings (the fit's stages added to `times`; total left to the
@@ -39,11 +41,14 @@ FitReport make_report(FunctionFitResult& fit, int nurbs_degree_u, int nurbs_degr
 namespace polarform {
 
 template <class MakeGeometry>
-ErrorMeasure distance_measure(MakeGeometry make, const Eigen::Matrix3Xd& local, const Samples& samples,
-                              int threads, std::size_t* unconverged) {
-  return [make, &local, &samples, threads, unconverged](const BSplineSurface& F, ProgressRange progress) {
+ErrorMeasure distance_measure(MakeGeometry make, const Eigen::Matrix3Xd& local,
+                              const Samples& samples, int threads, std::size_t* unconverged,
+                              std::size_t* restarted) {
+  return [make, &local, &samples, threads, unconverged, restarted](const BSplineSurface& F,
+                                                                   ProgressRange progress) {
     const PointDistances d = point_distances(make(F), local, samples.u, samples.v, threads, progress);
     *unconverged = d.unconverged;
+    if (restarted) *restarted = d.restarted;
     return d.signed_distance;
   };
 }

@@ -27,7 +27,12 @@ struct FitReport {
   ErrorStats radial;                 // |ρ_k − F(u_k, v_k)| along the rays, likewise
   Eigen::VectorXd signed_distance;   // per input point, positive outside (away from centre/axis)
   OutlierReport outliers;            // the points left out under OutlierPolicy::reject
-  std::size_t unconverged = 0;       // closest-point searches that hit their iteration limit
+  // Closest-point searches (one per input point; none is dropped): those that hit the iteration
+  // limit of ProductGeometry::foot_point from the synchronized start were restarted from the best
+  // of a coarse parameter grid (point_distances.h); `restarted` converged then, `unconverged` hit
+  // the limit from both starts and keep the closest distance they reached.
+  std::size_t unconverged = 0;
+  std::size_t restarted = 0;
   NetSelection net;                  // how F's net was chosen (net_selection.h)
   RevolutionTest revolution;         // whether F was made constant around the axis, and why
   StageTimes times;

@@ -4,15 +4,20 @@
 #include <cmath>
 #include <sstream>
 
+#include "src/fit/meridian_function.h"
+#include "src/fit/principal_frame.h"
+#include "src/fit/rotation_axis.h"
+
 namespace polarform {
 
 namespace {
 
 constexpr Eigen::Index kMaxPoints = 20000;
+constexpr Eigen::Index kMaxProfilePoints = 50000;
 
-Eigen::Matrix3Xd strided(const Eigen::Matrix3Xd& p) {
-  if (p.cols() <= kMaxPoints) return p;
-  const Eigen::Index stride = (p.cols() + kMaxPoints - 1) / kMaxPoints;
+Eigen::Matrix3Xd strided(const Eigen::Matrix3Xd& p, Eigen::Index max_points = kMaxPoints) {
+  if (p.cols() <= max_points) return p;
+  const Eigen::Index stride = (p.cols() + max_points - 1) / max_points;
   Eigen::Matrix3Xd out(3, (p.cols() + stride - 1) / stride);
   for (Eigen::Index a = 0; a < out.cols(); ++a) out.col(a) = p.col(a * stride);
   return out;
@@ -162,6 +167,61 @@ FrameCandidate least_squares_centre(const Eigen::Matrix3Xd& points,
       << " mm at the start, " << rms(r) << " mm";
   f.how = how.str();
   return f;
+}
+
+// Kantz 2003, §5.1 (PCA) and §5.3 (refinement against the meridian profile).
+FrameCandidate profile_refined_axis(const Eigen::Matrix3Xd& points,
+                                    const std::vector<AxisStart>& starts) {
+  const Eigen::Matrix3Xd p = strided(points, kMaxProfilePoints);
+  const PrincipalFrame pca = principal_frame(p);
+  std::vector<AxisStart> all{{"PCA", pca.centroid, pca.axis(FrameAxis::most_distinct)}};
+  all.insert(all.end(), starts.begin(), starts.end());
+  AxisRefinementOptions o;
+  o.size = (pca.box_high - pca.box_low).norm();
+  o.max_iterations = 40;
+  o.step_tolerance = 1e-12;
+  std::ostringstream how;
+  how.precision(4);
+  how << "robust Gauss–Newton of the axis against a least-squares meridian profile r(z) ("
+      << p.cols() << " points), from";
+  FrameCandidate best;
+  best.name = "PCA + profile refinement";
+  double best_rms = HUGE_VAL;
+  std::string best_start;
+  for (const AxisStart& s : all) {
+    AxisLine line{s.origin, s.axis.normalized()};
+    double before = 0.0, after = HUGE_VAL;
+    int iterations = 0, size = 0;
+    try {
+      for (int pass = 0; pass < 2; ++pass) {
+        size = choose_meridian_function_size(meridian_coordinates(p, line, o.threads));
+        const AxisRefinement r = refine_axis_by_profile(p, line, meridian_function_model(size), o);
+        if (pass == 0) before = r.rms_before;
+        after = r.rms_after, iterations += r.iterations, line = r.axis;
+      }
+    } catch (const std::exception&) {
+      after = HUGE_VAL;
+    }
+    how << (&s == &all.front() ? " " : "; ") << s.name;
+    if (!std::isfinite(after) || !line.direction.allFinite() || !line.point.allFinite()) {
+      how << " (failed)";
+      continue;
+    }
+    how << " (rms " << before << " → " << after << " mm, " << iterations
+        << " iterations, profile of " << size << " coefficients)";
+    if (after < best_rms) {
+      best_rms = after, best_start = s.name;
+      best.origin = line.point, best.axis = line.direction;
+    }
+  }
+  if (!std::isfinite(best_rms)) {
+    best.origin = pca.centroid, best.axis = pca.axis(FrameAxis::most_distinct);
+    how << "; every refinement failed: the PCA axis";
+  } else {
+    how << "; kept the refinement from " << best_start;
+  }
+  best.how = how.str();
+  return best;
 }
 
 }  // namespace polarform

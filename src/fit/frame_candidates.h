@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace polarform {
 
@@ -19,6 +20,18 @@ struct FrameCandidate {
   std::string how;      // how it was found, with its residual
   double rms = -1.0;    // the fit's rms true distance with this frame (< 0: not fitted)
   std::string failure;  // why its fit failed (not single-valued, …), empty when it did not
+  // Filled by the fitter: whether F(u) alone explained the data in this frame (the F-test of
+  // revolution_test.h), and the fit's size.
+  bool rotational = false;
+  double p_value = -1.0;   // of the F-test (< 0: not tested)
+  long coefficients = 0;   // of F
+  std::size_t points = 0;  // the error statistics' count
+};
+
+// A start of the profile refinement: a name and a line.
+struct AxisStart {
+  std::string name;
+  Eigen::Vector3d origin, axis;
 };
 
 // The line (origin on it, unit axis) minimising Σ (dist(p, line) − r(t))², r quadratic in t, by
@@ -33,5 +46,14 @@ FrameCandidate least_squares_axis(const Eigen::Matrix3Xd& points,
 FrameCandidate least_squares_centre(const Eigen::Matrix3Xd& points,
                                     const Eigen::Vector3d& start_centre,
                                     const Eigen::Vector3d& axis);
+
+// The axis of a surface of revolution by the rotational criterion (Kantz 2003, §5.3; spec K11
+// step 4): from the PCA axis (the most distinct eigenvector through the centroid) and from each of
+// `starts`, refine_axis_by_profile against a meridian profile whose size GCV chooses at the start
+// and again at the refined axis (a second pass); the start whose refinement ends with the smallest
+// robust rms residual wins. At most 50,000 evenly strided points are used. Named "PCA + profile
+// refinement"; `how` lists every start with its residual.
+FrameCandidate profile_refined_axis(const Eigen::Matrix3Xd& points,
+                                    const std::vector<AxisStart>& starts = {});
 
 }  // namespace polarform

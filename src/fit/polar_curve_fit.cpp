@@ -113,6 +113,7 @@ PolarCurveFit fit_polar_curve(const Eigen::Matrix2Xd& points, const PolarFitOpti
                               trimmed.unconverged, times);
   rep.outliers = std::move(outliers);
   rep.net = std::move(trimmed.net);
+  rep.restarted = trimmed.restarted;
   rep.revolution = std::move(trimmed.revolution);
   rep.times.total = total.lap();
   return PolarCurveFit{std::move(curve), std::move(F), std::move(base), centre, centre_reason.str(),

@@ -28,8 +28,9 @@ struct RotationalFitOptions {
 struct RotationalFit {
   std::variant<SphericalFit, CylindricalFit> fit;
   std::string reason;
-  // Every frame tried with the chosen method, with the error its fit achieved; the fit uses the
-  // one of smallest rms (empty when origin and axis were both given).
+  // Every frame tried with the chosen method, with the error its fit achieved and whether F(u)
+  // alone explained the data in it; the fit uses the best by the rule of fit_rotational (empty
+  // when origin and axis were both given).
   std::vector<FrameCandidate> frame_candidates;
 
   FitMethod method() const;
@@ -43,9 +44,13 @@ struct RotationalFit {
 // cone, elliptic paraboloid, hyperboloid of two sheets → both, the smaller RMS distance wins. A
 // preferred fit that fails (not single-valued, tolerance not met) falls back to the other. Throws
 // the preferred method's error when both fail. Unless origin and axis are both given, the chosen
-// method is then refitted in a second frame — the least-squares axis line (cylindrical; a given
-// axis keeps its direction and finds its line) or the least-squares centre (spherical; unless the
-// origin is given) — and the frame whose fit has the smaller rms distance is kept.
+// method is then refitted in more frames — the least-squares axis line (cylindrical; a given axis
+// keeps its direction and finds its line) and, with nothing given, the PCA axis refined by the
+// rotational criterion (profile_refined_axis), or the least-squares centre (spherical; unless the
+// origin is given). A frame in which the F-test made F(u) alone (a surface of revolution) replaces
+// one that needs F(u, v) unless the latter's true distances are smaller beyond the noise (the
+// extra-sum-of-squares F-test of the two fits, level kRevolutionAlpha): F(u, v) in a tilted frame
+// absorbs the tilt, so its rms alone cannot tell the frames apart. Otherwise the smaller rms wins.
 RotationalFit fit_rotational(const Eigen::Matrix3Xd& points, const RotationalFitOptions& options = {});
 RotationalFit fit_rotational(const std::filesystem::path& file, const RotationalFitOptions& options = {},
                              const ReadOptions& read = {});

@@ -151,6 +151,7 @@ SphericalFit fit_spherical(const Eigen::Matrix3Xd& points, const SphericalFitOpt
                               surface.size_v(), trimmed.kept, threads, trimmed.unconverged, times);
   rep.outliers = std::move(outliers);
   rep.net = std::move(trimmed.net);
+  rep.restarted = trimmed.restarted;
   rep.revolution = std::move(trimmed.revolution);
   rep.times.total = total.lap();
   progress(1.0);

@@ -15,8 +15,9 @@ TrimmedFit fit_trimmed(Samples samples, const Eigen::Matrix3Xd& local, const Fun
     ModelChoice c = choose_model(samples, space, options, model);
     r.net = std::move(c.net);
     r.revolution = std::move(c.revolution);
-    r.fit = fit_function(samples, c.space, c.options,
-                         distance_measure(geometry, local, samples, threads, &r.unconverged));
+    r.fit = fit_function(
+        samples, c.space, c.options,
+        distance_measure(geometry, local, samples, threads, &r.unconverged, &r.restarted));
     r.kept = std::move(samples);
     return r;
   }
@@ -43,6 +44,7 @@ TrimmedFit fit_trimmed(Samples samples, const Eigen::Matrix3Xd& local, const Fun
       point_distances(geometry(r.fit.F), local, samples.u, samples.v, threads);
   r.fit.errors = all.signed_distance;
   r.unconverged = all.unconverged;
+  r.restarted = all.restarted;
   return r;
 }
 

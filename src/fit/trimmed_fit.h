@@ -22,6 +22,7 @@ struct TrimmedFit {
   FunctionFitResult fit;        // errors: every point's signed distance; stats: the kept points'
   Samples kept;                 // the samples fitted
   std::size_t unconverged = 0;  // foot points (of all points) that hit their iteration limit
+  std::size_t restarted = 0;    // foot points (of all points) found only after a restart
   NetSelection net;             // the model chosen for F before the fit (model_choice.h)
   RevolutionTest revolution;
 };

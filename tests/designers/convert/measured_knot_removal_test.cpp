@@ -47,9 +47,11 @@ TEST(MeasuredKnotRemoval, FullCompactionLeavesNoC0KnotAtTheExamplesTolerance) {
     options.tolerance = 1e-3;
     options.compaction = Compaction::full;
     const PolarConversion c = convert_polar_function(contour(name), options);
-    for (const Breakpoint& k : breakpoints(c.curve.knots()))
-      if (k.value > c.curve.front() && k.value < c.curve.back())
+    for (const Breakpoint& k : breakpoints(c.curve.knots())) {
+      if (k.value > c.curve.front() && k.value < c.curve.back()) {
         EXPECT_LT(k.multiplicity, c.curve.degree()) << "at " << k.value;
+      }
+    }
   }
 }
 

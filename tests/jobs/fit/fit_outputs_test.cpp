@@ -125,6 +125,38 @@ TEST(FitOutputs, RejectedOutliersAreReported) {
   EXPECT_NE(html.find("Outliers: 4 of 6000 points rejected"), std::string::npos);
 }
 
+// Issue 19: every frame candidate with its numbers (the PCA + profile refinement one included,
+// exactly one marked chosen), and every point's foot-point search accounted for: converged from
+// the synchronized start, after the restart, or not at all (with the reason), none dropped.
+TEST(FitOutputs, FrameCandidatesAndFootPointsAreReported) {
+  const FitJobResult r = run_fit_job(vase_cloud(6000, 0.001, 23), "vase.xyz");
+  const nlohmann::ordered_json j = fit_report_fields(r);
+  EXPECT_EQ(j["method"], "cylindrical");
+  const auto& list = j["frame_candidates"];
+  ASSERT_EQ(list.size(), 3u);
+  EXPECT_EQ(list[2]["name"], "PCA + profile refinement");
+  int chosen = 0;
+  for (const auto& c : list) {
+    ASSERT_FALSE(c["rms_mm"].is_null()) << c.dump();
+    EXPECT_TRUE(c["F"] == "F(u) alone" || c["F"] == "F(u, v)") << c.dump();
+    EXPECT_GT(c["coefficients"].get<long>(), 0);
+    EXPECT_EQ(c["points"], 6000);
+    chosen += c["chosen"].get<bool>() ? 1 : 0;
+  }
+  EXPECT_EQ(chosen, 1);
+  // The synthetic vase has a real cos 2θ term: F(u, v) in every frame.
+  EXPECT_FALSE(j["revolution"]["rotational"].get<bool>()) << j["reason"];
+  const auto& fp = j["foot_points"];
+  EXPECT_EQ(fp["searched"], 6000);
+  EXPECT_EQ(fp["dropped"], 0);
+  EXPECT_EQ(fp["converged_first"].get<long>() + fp["restarted"].get<long>() +
+                fp["unconverged"].get<long>(),
+            6000);
+  EXPECT_EQ(fp["unconverged"], j["error_mm"]["unconverged_foot_points"]);
+  EXPECT_EQ(fp["unconverged"].get<long>() == 0, fp["unconverged_reason"].is_null());
+  EXPECT_FALSE(fp["restart"].get<std::string>().empty());
+}
+
 TEST(FitOutputs, PolarProfileWritesCurveFilesWithDxf) {
   const auto dir = scratch_dir();
   std::string text = "x,y,z\n";

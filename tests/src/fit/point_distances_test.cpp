@@ -32,6 +32,8 @@ TEST(PointDistances, EveryFootPointOfAFaceLikePatchConvergesToTheClosestPoint) {
   o.frame.origin = m.t + 30.0 * m.R.col(0);
   const CylindricalFit f = fit_cylindrical(p, o);
   EXPECT_EQ(f.report.unconverged, 0u);
+  EXPECT_LE(f.report.restarted, 1600u);
+  RecordProperty("restarted", std::to_string(f.report.restarted));
   EXPECT_LT(f.report.error.rms, 1.2 * 0.05);
 
   const ProductGeometry g = ProductGeometry::cylindrical(f.F, f.base);

@@ -315,9 +315,11 @@ TEST_F(StudioTest, FitWorkspaceRecoversACamDesignAsTheCliDoes) {
                             .c_str()),
             0);
   EXPECT_EQ(slurp(dir_ / "studio_design.xml"), slurp(dir_ / "cli_design.xml"));
-  for (const char* file : {"svaj.csv", "deviation.csv", "profile.igs"})
-    if (fs::exists(dir_ / "cli_outputs" / file))
+  for (const char* file : {"svaj.csv", "deviation.csv", "profile.igs"}) {
+    if (fs::exists(dir_ / "cli_outputs" / file)) {
       EXPECT_EQ(slurp(dir_ / "studio_outputs" / file), slurp(dir_ / "cli_outputs" / file)) << file;
+    }
+  }
   const auto shown = numbers(r.output, "scan:");
   const auto report = nlohmann::ordered_json::parse(slurp(dir_ / "cli_outputs" / "report.json"));
   const auto written = numbers(polarform::report_lines(report, "scan_cam."));
@@ -337,10 +339,12 @@ TEST_F(StudioTest, FitWorkspaceRecoversACamDesignAsTheCliDoes) {
   const auto design = numbers(r.output, "design:");
   ASSERT_EQ(number(design, "segments"), static_cast<double>(recovered.cam.segments.size()))
       << r.output;
-  for (std::size_t k = 0; k < recovered.cam.segments.size(); ++k)
-    if (recovered.cam.segments[k].kind != polarform::SegmentKind::Dwell)
+  for (std::size_t k = 0; k < recovered.cam.segments.size(); ++k) {
+    if (recovered.cam.segments[k].kind != polarform::SegmentKind::Dwell) {
       EXPECT_EQ(design.at("report.segments." + std::to_string(k) + ".law"),
                 polarform::motion_law_name(recovered.cam.segments[k].law));
+    }
+  }
   EXPECT_GT(number(design, "report.control_points"), 0) << "the recovered design converts";
 }
 
