@@ -8,15 +8,10 @@
 
 #include "src/error.h"
 #include "src/number_text.h"
+#include "src/nurbs/binomial.h"
 
 namespace polarform {
 namespace {
-
-double binomial(int n, int k) {
-  double c = 1.0;
-  for (int i = 1; i <= k; ++i) c = c * (n - k + i) / i;
-  return c;
-}
 
 // The k-th derivative at x of the n + 1 Bernstein polynomials of degree n: the (n−k)-degree
 // Bernstein values of the k-th forward differences, times n!/(n−k)! (Farin, Curves and Surfaces

@@ -4,15 +4,10 @@
 #include <vector>
 
 #include "src/error.h"
+#include "src/nurbs/binomial.h"
 
 namespace polarform {
 namespace {
-
-double binomial(int n, int k) {
-  double c = 1.0;
-  for (int i = 1; i <= k; ++i) c = c * (n - k + i) / i;
-  return c;
-}
 
 double falling_factorial(int n, int i) {  // n!/(n-i)!
   double f = 1.0;

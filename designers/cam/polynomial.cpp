@@ -6,18 +6,9 @@
 
 #include "src/error.h"
 #include "src/number_text.h"
+#include "src/nurbs/binomial.h"
 
 namespace polarform {
-namespace {
-
-double binomial(int n, int k) {
-  double c = 1.0;
-  for (int i = 1; i <= k; ++i) c = c * (n - k + i) / i;
-  return c;
-}
-
-}  // namespace
-
 Polynomial::Polynomial(double u0, double u1, std::vector<double> coefficients)
     : u0_(u0), u1_(u1), coefficients_(std::move(coefficients)) {
   if (!(u0_ < u1_) || !std::isfinite(u0_) || !std::isfinite(u1_))

@@ -2,15 +2,11 @@
 
 #include <cmath>
 
+#include "src/nurbs/binomial.h"
+
 namespace polarform {
 
 namespace {
-
-double binomial(int n, int k) {
-  double b = 1.0;
-  for (int i = 1; i <= k; ++i) b = b * (n - k + i) / i;
-  return b;
-}
 
 // Sign changes of the sequence, zeros skipped.
 int sign_changes(const std::vector<double>& b) {

@@ -2,6 +2,8 @@
 
 #include <Eigen/Geometry>
 
+#include "src/nurbs/binomial.h"
+
 namespace polarform {
 
 namespace {
@@ -17,12 +19,6 @@ Eigen::MatrixXd homogenize(const NurbsSurface::Points& points, const std::vector
     h(3, i) = w;
   }
   return h;
-}
-
-double binomial(int n, int k) {
-  double b = 1.0;
-  for (int i = 1; i <= k; ++i) b = b * (n - k + i) / i;
-  return b;
 }
 
 }  // namespace

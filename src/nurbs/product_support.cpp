@@ -3,18 +3,13 @@
 #include <string>
 
 #include "src/error.h"
+#include "src/nurbs/binomial.h"
 #include "src/nurbs/error_text.h"
 #include "src/nurbs/knot_remover.h"
 
 namespace polarform::product_support {
 
 namespace {
-
-double binomial(int n, int k) {
-  double b = 1.0;
-  for (int i = 1; i <= k; ++i) b = b * (n - k + i) / i;
-  return b;
-}
 
 // Relative size of the coefficient mismatch that still counts as round-off in an exact removal.
 constexpr double kExactRemovalTolerance = 1e-9;
