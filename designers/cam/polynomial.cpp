@@ -9,6 +9,7 @@
 #include "src/nurbs/binomial.h"
 
 namespace polarform {
+
 Polynomial::Polynomial(double u0, double u1, std::vector<double> coefficients)
     : u0_(u0), u1_(u1), coefficients_(std::move(coefficients)) {
   if (!(u0_ < u1_) || !std::isfinite(u0_) || !std::isfinite(u1_))
