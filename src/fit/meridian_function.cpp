@@ -1,12 +1,10 @@
 #include "src/fit/meridian_function.h"
 
-#include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
 
 #include "src/error.h"
-#include "src/nurbs/basis.h"
-#include "src/nurbs/knots.h"
+#include "src/fit/function_fit.h"
 
 namespace polarform {
 
@@ -16,8 +14,8 @@ constexpr int kDegree = 3;
 
 }  // namespace
 
-// NURBS Book §9.4.1 (least-squares curve approximation) on uniform knots, a second-difference
-// ridge of relative weight 1e-9 for spans without data.
+// The 1 x n least-squares function fit of function_fit.h (uniform knots, relative fairing for
+// spans without data) with a fixed size, scored by GCV.
 MeridianFunction fit_meridian_function(const Eigen::Matrix2Xd& zr, int size) {
   const Eigen::Index n = zr.cols();
   size = std::max(size, kDegree + 1);
@@ -26,35 +24,16 @@ MeridianFunction fit_meridian_function(const Eigen::Matrix2Xd& zr, int size) {
                      std::to_string(size) + " coefficients");
   double z0 = zr.row(0).minCoeff(), z1 = zr.row(0).maxCoeff();
   if (!(z1 > z0)) z1 = z0 + 1.0;
-  const Knots knots = uniform_clamped_knots(kDegree, size - kDegree, z0, z1);
-  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(size, size);
-  Eigen::VectorXd b = Eigen::VectorXd::Zero(size);
-  double N[kDegree + 1];
-  for (Eigen::Index k = 0; k < n; ++k) {
-    const double z = zr(0, k);
-    const int span = find_span(kDegree, knots, size, z);
-    basis_funs(span, z, kDegree, knots, N);
-    const int first = span - kDegree;
-    for (int i = 0; i <= kDegree; ++i) {
-      b[first + i] += N[i] * zr(1, k);
-      for (int j = 0; j <= kDegree; ++j) A(first + i, first + j) += N[i] * N[j];
-    }
-  }
-  const double ridge = 1e-9 * std::max(A.diagonal().mean(), 1e-300);
-  for (int i = 0; i + 2 < size; ++i) {
-    const double d[3] = {1.0, -2.0, 1.0};
-    for (int a = 0; a < 3; ++a)
-      for (int c = 0; c < 3; ++c) A(i + a, i + c) += ridge * d[a] * d[c];
-  }
-  A.diagonal().array() += 1e-14 * A.diagonal().mean();
-  const Eigen::VectorXd coef = A.ldlt().solve(b);
+  FunctionFitOptions o;
+  o.degree_v = kDegree;
+  o.size_v = size;
+  o.reduce_constant = false;
+  o.threads = 1;
+  const CurveFunctionFit f =
+      fit_curve_function(zr.row(0).transpose(), zr.row(1).transpose(), z0, z1, false, o);
   MeridianFunction p;
-  p.r = BSplineFunction(kDegree, knots, coef);
-  double rss = 0.0;
-  for (Eigen::Index k = 0; k < n; ++k) {
-    const double e = zr(1, k) - p.r(zr(0, k));
-    rss += e * e;
-  }
+  p.r = f.F;
+  const double rss = f.errors.squaredNorm();
   p.rms = std::sqrt(rss / double(n));
   const double fill = 1.0 - double(size) / double(n);
   p.gcv = (rss / double(n)) / (fill * fill);

@@ -1,5 +1,5 @@
 // A meridian function r(z) of a surface of revolution for the axis refinement of rotation_axis.h: a
-// least-squares cubic B-spline on uniform knots over the data's z range (NURBS Book §9.4.1), its
+// least-squares cubic B-spline on uniform knots over the data's z range (function_fit.h), its
 // size chosen once by GCV (Craven & Wahba 1979), refitted to the meridian points every
 // Gauss–Newton iteration; the residual of (z, r) is r − f(z) times the cosine of the profile's
 // slope (the distance to the curve to first order), signed along its normal (−f', 1)/√(1 + f'²).
@@ -20,7 +20,7 @@ struct MeridianFunction {
 };
 
 // The least-squares cubic r(z) with `size` coefficients on uniform knots over the z range of zr
-// (2 x n: z, r). Spans without data are held by a small ridge toward their neighbours.
+// (2 x n: z, r) by fit_curve_function; spans without data are held by its relative fairing.
 MeridianFunction fit_meridian_function(const Eigen::Matrix2Xd& zr, int size);
 
 // The profile size by GCV: sizes from 6 grown by half again, stopping after two sizes without a 1 %
