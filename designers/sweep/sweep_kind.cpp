@@ -1,11 +1,12 @@
 // Evidence for the kind of a sweep: flat normals (extrusion) or meridional normals (revolution).
 #include "designers/sweep/sweep_kind.h"
 
-#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
+#include "designers/sweep/extrusion_recovery.h"
 #include "designers/sweep/recovery_steps.h"
 #include "src/fit/local_normals.h"
 #include "src/fit/principal_frame.h"
@@ -29,9 +30,7 @@ SweepKindEvidence sweep_kind_evidence(const Eigen::Matrix3Xd& points, int neighb
   const Eigen::Vector3d a = pca.axis(FrameAxis::most_distinct), c = pca.centroid;
   SweepKindEvidence e;
   e.tie_ratio = pca.tie_ratio(FrameAxis::most_distinct);
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(n * n.transpose());
-  const double sum = eig.eigenvalues().sum();
-  e.normals_flatness = sum > 0 ? std::max(eig.eigenvalues()[0], 0.0) / sum : 0.0;
+  e.normals_flatness = normals_direction(n, a).flatness;
   std::vector<double> azimuthal;
   for (Eigen::Index k = 0; k < P.cols(); ++k) {
     const Eigen::Vector3d t = a.cross(Eigen::Vector3d(P.col(k) - c));
