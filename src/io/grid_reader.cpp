@@ -10,6 +10,7 @@
 
 #include "src/error.h"
 #include "src/io/csv_text.h"
+#include "src/io/text_scan.h"
 #include "src/number_text.h"
 #include "src/units.h"
 
@@ -17,13 +18,7 @@ namespace polarform {
 
 namespace {
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r'))
-    s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r'))
-    s.remove_suffix(1);
-  return s;
-}
+using io_detail::trim;
 
 // Fields separated by commas (blanks around them allowed) or, without commas, by blanks.
 std::vector<std::string_view> fields(std::string_view line) {
@@ -57,18 +52,8 @@ ScalarGrid parse_scalar_grid(std::string_view text, const std::string& name) {
   ScalarGrid g;
   int column[3] = {-1, -1, -1};  // value, first coordinate (phi or theta), second (theta or z)
   std::vector<double> rows[3];
-  std::size_t line_no = 0;
   bool header = false;
-  while (!text.empty()) {
-    const std::size_t nl = text.find('\n');
-    std::string_view line = text.substr(0, nl);
-    text.remove_prefix(nl == std::string_view::npos ? text.size() : nl + 1);
-    ++line_no;
-    if (line_no == 1 && line.starts_with("\xEF\xBB\xBF")) line.remove_prefix(3);
-    const std::size_t hash = line.find('#');
-    line = trim(hash == std::string_view::npos ? line : line.substr(0, hash));
-    if (line.empty()) continue;
-    const std::string where = name + ":" + std::to_string(line_no) + ": ";
+  for_each_data_line(text, name, [&](std::string_view line, const std::string& where) {
     const std::vector<std::string_view> f = fields(line);
     if (!header) {
       header = true;
@@ -89,7 +74,7 @@ ScalarGrid parse_scalar_grid(std::string_view text, const std::string& name) {
       column[0] = value;
       column[1] = g.setup == GridSetup::spherical ? phi : theta;
       column[2] = g.setup == GridSetup::spherical ? theta : z;
-      continue;
+      return;
     }
     if (f.size() != 3)
       throw InputError(where + "expected 3 numbers (" + std::string(line) + "), found " +
@@ -108,7 +93,7 @@ ScalarGrid parse_scalar_grid(std::string_view text, const std::string& name) {
                          ": expected a polar angle in [0, 180]");
       rows[c].push_back(v);
     }
-  }
+  });
   if (!header) throw InputError(name + ": no header line; " + kHeaderHelp);
   if (rows[0].size() < 16)
     throw InputError(name + ": " + std::to_string(rows[0].size()) +
