@@ -15,10 +15,10 @@ AzimuthalCoverage azimuthal_coverage(const Eigen::Matrix3Xd& P, const AxisLine& 
   const auto [e1, e2] = normal_pair(axis.direction);
   const Eigen::Index n = P.cols();
   std::vector<std::int64_t> key(static_cast<std::size_t>(n));
-  std::vector<int> sector(static_cast<std::size_t>(n));
   struct Cell {
     std::uint64_t sectors = 0;
     int count = 0;
+    double ratio = 0.0;  // distinct sectors / those `count` random points would cover
   };
   std::unordered_map<std::int64_t, Cell> cells;
   sectors = std::clamp(sectors, 2, 64);
@@ -29,17 +29,16 @@ AzimuthalCoverage azimuthal_coverage(const Eigen::Matrix3Xd& P, const AxisLine& 
     const std::int64_t iz = static_cast<std::int64_t>(std::floor(z / cell)),
                        ir = static_cast<std::int64_t>(std::floor(r / cell));
     key[k] = (iz << 32) ^ ir;
-    sector[k] = std::min(sectors - 1, static_cast<int>(t / (2 * std::numbers::pi) * sectors));
+    const int sector =
+        std::min(sectors - 1, static_cast<int>(t / (2 * std::numbers::pi) * sectors));
     Cell& c = cells[key[k]];
-    c.sectors |= std::uint64_t{1} << sector[k];
+    c.sectors |= std::uint64_t{1} << sector;
     ++c.count;
   }
-  auto ratio = [&](const Cell& c) {
-    const double expected = sectors * (1 - std::pow(1 - 1.0 / sectors, c.count));
-    return std::popcount(c.sectors) / expected;
-  };
+  for (auto& [k, c] : cells)
+    c.ratio = std::popcount(c.sectors) / (sectors * (1 - std::pow(1 - 1.0 / sectors, c.count)));
   std::vector<double> ratios(static_cast<std::size_t>(n));
-  for (Eigen::Index k = 0; k < n; ++k) ratios[k] = ratio(cells[key[k]]);
+  for (Eigen::Index k = 0; k < n; ++k) ratios[k] = cells.find(key[k])->second.ratio;
   AzimuthalCoverage out;
   std::vector<double> sorted = ratios;
   std::nth_element(sorted.begin(), sorted.begin() + n / 2, sorted.end());
