@@ -33,9 +33,11 @@ CylindricalFit fit_cylindrical(const Eigen::Matrix3Xd& points, const Cylindrical
   times.sync = clock.lap();
 
   SingleValuedness check;
-  Eigen::VectorXd arc = cc.r.mean() * cc.theta;  // r̄·θ: comparable with z
+  // θ becomes the arc r̄·θ, comparable with z, for the checks (in place: 80 MB at 10^7 points).
+  const double rbar = cc.r.mean() > 0.0 ? cc.r.mean() : 1.0;
+  cc.theta *= rbar;
+  const Eigen::VectorXd& arc = cc.theta;
   const auto folds = [&] {
-    const double rbar = cc.r.mean();
     std::ostringstream msg;
     msg.precision(6);
     msg << "cylindrical fit: the data is not single-valued about the axis through ("
@@ -55,9 +57,10 @@ CylindricalFit fit_cylindrical(const Eigen::Matrix3Xd& points, const Cylindrical
       opt.outliers, cc.z, arc, cc.r, check, opt.check_single_valued, "cylindrical fit",
       [&](Eigen::Index k) {
         return "z " + number_text(cc.z[k]) + " mm, theta " +
-               number_text(degrees_in_turn(cc.theta[k])) + " deg";
+               number_text(degrees_in_turn(arc[k] / rbar)) + " deg";
       },
       folds, threads);
+  cc.theta /= rbar;
   times.check = clock.lap();
   progress(0.15);
 
@@ -70,7 +73,6 @@ CylindricalFit fit_cylindrical(const Eigen::Matrix3Xd& points, const Cylindrical
   samples.value = std::move(cc.r);
   // The coordinates are in the samples now: 320 MB fewer at 10^7 points during the fit.
   cc = CylindricalCoordinates{};
-  arc = Eigen::VectorXd();
   times.sync += clock.lap();
 
   const FunctionSpace space{0.0,

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "src/fit/meridian_function.h"
+#include "src/fit/point_subset.h"
 #include "src/fit/principal_frame.h"
 #include "src/fit/rotation_axis.h"
 
@@ -14,14 +15,7 @@ namespace {
 
 constexpr Eigen::Index kMaxPoints = 20000;
 constexpr Eigen::Index kMaxProfilePoints = 50000;
-
-Eigen::Matrix3Xd strided(const Eigen::Matrix3Xd& p, Eigen::Index max_points = kMaxPoints) {
-  if (p.cols() <= max_points) return p;
-  const Eigen::Index stride = (p.cols() + max_points - 1) / max_points;
-  Eigen::Matrix3Xd out(3, (p.cols() + stride - 1) / stride);
-  for (Eigen::Index a = 0; a < out.cols(); ++a) out.col(a) = p.col(a * stride);
-  return out;
-}
+constexpr double kExtraStartRatio = 2.0;
 
 // Two unit vectors completing `a` to an orthonormal basis.
 void basis(const Eigen::Vector3d& a, Eigen::Vector3d& e1, Eigen::Vector3d& e2) {
@@ -63,7 +57,7 @@ FrameCandidate least_squares_axis(const Eigen::Matrix3Xd& points,
                                   const Eigen::Vector3d& start_origin,
                                   const Eigen::Vector3d& start_axis, bool fix_origin,
                                   bool fix_axis) {
-  const Eigen::Matrix3Xd p = strided(points);
+  const Eigen::Matrix3Xd p = strided_columns(points, kMaxPoints);
   Eigen::Vector3d o = start_origin, a = start_axis.normalized();
   const double size = (p.colwise() - p.rowwise().mean()).rowwise().norm().maxCoeff() + 1e-12;
   Eigen::VectorXd r = axis_residuals(p, o, a);
@@ -134,7 +128,7 @@ FrameCandidate least_squares_axis(const Eigen::Matrix3Xd& points,
 FrameCandidate least_squares_centre(const Eigen::Matrix3Xd& points,
                                     const Eigen::Vector3d& start_centre,
                                     const Eigen::Vector3d& axis) {
-  const Eigen::Matrix3Xd p = strided(points);
+  const Eigen::Matrix3Xd p = strided_columns(points, kMaxPoints);
   Eigen::Vector3d c = start_centre;
   auto residuals = [&](const Eigen::Vector3d& x, Eigen::VectorXd& d) {
     d = (p.colwise() - x).colwise().norm().transpose();
@@ -171,21 +165,54 @@ FrameCandidate least_squares_centre(const Eigen::Matrix3Xd& points,
 
 // Kantz 2003, §5.1 (PCA) and §5.3 (refinement against the meridian profile).
 FrameCandidate profile_refined_axis(const Eigen::Matrix3Xd& points,
-                                    const std::vector<AxisStart>& starts) {
-  const Eigen::Matrix3Xd p = strided(points, kMaxProfilePoints);
+                                    const std::vector<AxisStart>& starts,
+                                    const AxisConstraint& given) {
+  const Eigen::Matrix3Xd p = strided_columns(points, kMaxProfilePoints);
   const PrincipalFrame pca = principal_frame(p);
   std::vector<AxisStart> all{{"PCA", pca.centroid, pca.axis(FrameAxis::most_distinct)}};
   all.insert(all.end(), starts.begin(), starts.end());
+  const auto constrained = [&](AxisStart s) {
+    if (given.point) s.origin = *given.point;
+    if (given.direction) s.axis = *given.direction;
+    return s;
+  };
+  for (AxisStart& s : all) s = constrained(s);
+  // The other two principal axes start too where a meridian profile about them is within
+  // kExtraStartRatio of the best start's residual: on a partial scan the most distinct eigenvalue
+  // can belong to a transverse axis (a prolate spheroid over 270° of azimuth: 1.3×), while about a
+  // transverse axis of a cylinder the profile misses by the radius (100× the noise and more).
+  if (!given.direction) {
+    const auto profile_rms = [&](const AxisStart& s) {
+      const Eigen::Matrix2Xd zr = meridian_coordinates(p, {s.origin, s.axis.normalized()});
+      try {
+        return fit_meridian_function(zr, choose_meridian_function_size(zr)).rms;
+      } catch (const std::exception&) {
+        return HUGE_VAL;
+      }
+    };
+    double best_start = HUGE_VAL;
+    for (const AxisStart& s : all) best_start = std::min(best_start, profile_rms(s));
+    const int distinct = pca.axis_index(FrameAxis::most_distinct);
+    for (int i = 0; i < 3; ++i) {
+      const AxisStart s =
+          constrained({"PCA axis " + std::to_string(i + 1), pca.centroid, pca.axes.col(i)});
+      if (i != distinct && profile_rms(s) <= kExtraStartRatio * best_start) all.push_back(s);
+    }
+  }
   AxisRefinementOptions o;
   o.size = (pca.box_high - pca.box_low).norm();
   o.max_iterations = 40;
   o.step_tolerance = 1e-12;
+  o.fix_point = given.point.has_value();
+  o.fix_direction = given.direction.has_value();
   std::ostringstream how;
   how.precision(4);
   how << "robust Gauss–Newton of the axis against a least-squares meridian profile r(z) ("
       << p.cols() << " points), from";
   FrameCandidate best;
-  best.name = "PCA + profile refinement";
+  best.name = given.point       ? "PCA + profile refinement through the given centre"
+              : given.direction ? "PCA + profile refinement along the given axis"
+                                : "PCA + profile refinement";
   double best_rms = HUGE_VAL;
   std::string best_start;
   for (const AxisStart& s : all) {
@@ -215,7 +242,7 @@ FrameCandidate profile_refined_axis(const Eigen::Matrix3Xd& points,
     }
   }
   if (!std::isfinite(best_rms)) {
-    best.origin = pca.centroid, best.axis = pca.axis(FrameAxis::most_distinct);
+    best.origin = all.front().origin, best.axis = all.front().axis;
     how << "; every refinement failed: the PCA axis";
   } else {
     how << "; kept the refinement from " << best_start;

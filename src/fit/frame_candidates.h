@@ -47,13 +47,23 @@ FrameCandidate least_squares_centre(const Eigen::Matrix3Xd& points,
                                     const Eigen::Vector3d& start_centre,
                                     const Eigen::Vector3d& axis);
 
+// What the user gave of the axis line: a point on it (a centre) or its direction.
+struct AxisConstraint {
+  std::optional<Eigen::Vector3d> point, direction;
+};
+
 // The axis of a surface of revolution by the rotational criterion (Kantz 2003, §5.3; spec K11
 // step 4): from the PCA axis (the most distinct eigenvector through the centroid) and from each of
 // `starts`, refine_axis_by_profile against a meridian profile whose size GCV chooses at the start
 // and again at the refined axis (a second pass); the start whose refinement ends with the smallest
-// robust rms residual wins. At most 50,000 evenly strided points are used. Named "PCA + profile
-// refinement"; `how` lists every start with its residual.
+// robust rms residual wins; the other two principal axes start too where a profile about them
+// misses by at most twice the best start's (on a partial scan the most distinct eigenvalue can
+// belong to a transverse axis). A given point or direction is kept: every start is moved through
+// the point (its direction refined) or turned to the direction (its offset refined). At most 50,000
+// evenly strided points are used. Named "PCA + profile refinement"; `how` lists every start with
+// its residual.
 FrameCandidate profile_refined_axis(const Eigen::Matrix3Xd& points,
-                                    const std::vector<AxisStart>& starts = {});
+                                    const std::vector<AxisStart>& starts = {},
+                                    const AxisConstraint& given = {});
 
 }  // namespace polarform

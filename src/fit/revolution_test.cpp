@@ -45,6 +45,7 @@ RevolutionTest test_revolution(const Samples& all, const FunctionSpace& space,
   t.mode = RevolutionMode::automatic;
   t.tested = true;
   t.samples = s.size();
+  t.size_u = size_u, t.size_v = size_v;
   t.params_rotational = rot.coefficients, t.params_full = full.coefficients;
   t.rms_rotational = rot.rms, t.rms_full = full.rms;
   t.gcv_rotational = rot.gcv, t.gcv_full = full.gcv;

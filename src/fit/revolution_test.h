@@ -22,6 +22,7 @@ struct RevolutionTest {
   bool tested = false;      // the F-test ran (automatic mode)
   bool rotational = false;  // F was fitted constant in v
   std::size_t samples = 0;
+  int size_u = 0, size_v = 0;  // the F(u, v) net F(u) (size_u) was tested against
   long params_rotational = 0, params_full = 0;
   double rms_rotational = 0.0, rms_full = 0.0;  // parametric residuals, mm
   double gcv_rotational = 0.0, gcv_full = 0.0;

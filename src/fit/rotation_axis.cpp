@@ -61,10 +61,16 @@ struct Normal4 {
   double wrr = 0.0, w = 0.0;
 };
 
-Eigen::Vector4d solve_step(const Normal4& N) {
+// The Gauss–Newton step; the parameters a fixed direction or point freezes stay 0.
+Eigen::Vector4d solve_step(const Normal4& N, const AxisRefinementOptions& o) {
   Eigen::Matrix4d A = N.JtJ;
+  Eigen::Vector4d g = N.Jtr;
   A.diagonal().array() += 1e-12 * std::max(A.trace(), 1e-300);
-  Eigen::Vector4d s = -A.ldlt().solve(N.Jtr);
+  for (int i = 0; i < 4; ++i) {
+    if (i < 2 ? !o.fix_direction : !o.fix_point) continue;
+    A.row(i).setZero(), A.col(i).setZero(), A(i, i) = 1.0, g[i] = 0.0;
+  }
+  Eigen::Vector4d s = -A.ldlt().solve(g);
   const double tilt = std::hypot(s[0], s[1]);
   if (tilt > 0.05) s *= 0.05 / tilt;  // a trust region on the direction
   return s;
@@ -93,7 +99,7 @@ bool take_step(AxisRefinement& out, const Normal4& N, int it, const Eigen::Vecto
   if (it == 0) out.rms_before = rms;
   out.rms_after = rms;
   out.covariance = covariance(N);
-  const AxisLine next = apply_step(out.axis, solve_step(N), centroid);
+  const AxisLine next = apply_step(out.axis, solve_step(N, o), centroid);
   const bool done = small_step(out.axis, next, o);
   out.axis = next;
   out.iterations = it + 1;
@@ -123,7 +129,8 @@ AxisRefinement refine_axis_by_profile(const Eigen::Matrix3Xd& points, const Axis
                                       const MeridianModel& model, const AxisRefinementOptions& o) {
   AxisRefinement out;
   out.axis = start;
-  const Eigen::Vector3d centroid = points.rowwise().mean();
+  // The line's point: the foot of the centroid, or the fixed point itself.
+  const Eigen::Vector3d centroid = o.fix_point ? start.point : points.rowwise().mean();
   for (int it = 0; it < o.max_iterations; ++it) {
     const Eigen::Matrix2Xd zr = meridian_coordinates(points, out.axis, o.threads);
     const MeridianResiduals res = model(zr);
@@ -192,7 +199,7 @@ AxisRefinement refine_axis_by_rings(const Eigen::Matrix3Xd& points, const AxisLi
                                     double merge, const AxisRefinementOptions& o) {
   AxisRefinement out;
   out.axis = start;
-  const Eigen::Vector3d centroid = points.rowwise().mean();
+  const Eigen::Vector3d centroid = o.fix_point ? start.point : points.rowwise().mean();
   std::vector<int> label;
   double eps = merge;
   for (int it = 0; it < o.max_iterations; ++it) {

@@ -39,6 +39,9 @@ struct AxisRefinementOptions {
   double size = 1.0;              // the object's size (box diagonal)
   double scale_floor = 0.0;       // lower bound of the robust scale (e.g. the tolerance / 3)
   int threads = 2;
+  // A direction or a point the user gave: the direction is kept (only the line's offset is
+  // refined), or the line keeps passing through the start point (only the direction is refined).
+  bool fix_direction = false, fix_point = false;
 };
 
 struct AxisRefinement {

@@ -5,6 +5,7 @@
 
 #include "src/error.h"
 #include "src/fit/f_distribution.h"
+#include "src/fit/point_subset.h"
 #include "src/fit/quadric_fit.h"
 
 namespace polarform {
@@ -86,8 +87,11 @@ void fill(FrameCandidate& c, const FitReport& r) {
 // the data (a surface of revolution) is kept over one in which F(u, v) is needed unless the latter
 // is closer beyond the noise: the extra-sum-of-squares F-test of the two fits' true distances,
 // the rotational one the restricted model (Draper & Smith, §6.2); a tilted frame whose F(u, v)
-// absorbs the tilt is not closer than that. Otherwise the smaller rms distance wins.
-bool replaces(const Score& a, const Score& b) {
+// absorbs the tilt is not closer than that. Otherwise the smaller rms distance wins; with
+// `later_wins_ties`, a later frame within kFrameTie of the rms replaces an earlier one (the frames
+// are listed from the quadric's to the one refined by the rotational criterion).
+constexpr double kFrameTie = 1e-3;
+bool replaces(const Score& a, const Score& b, bool later_wins_ties = false) {
   if (a.rotational != b.rotational) {
     const Score& rot = a.rotational ? a : b;
     const Score& full = a.rotational ? b : a;
@@ -102,7 +106,7 @@ bool replaces(const Score& a, const Score& b) {
     }
     return a.rotational ? rot_wins : !rot_wins;
   }
-  return a.rms < b.rms;
+  return later_wins_ties ? a.rms <= b.rms * (1.0 + kFrameTie) : a.rms < b.rms;
 }
 
 std::string describe(const FrameCandidate& c) {
@@ -114,38 +118,77 @@ std::string describe(const FrameCandidate& c) {
   return o.str();
 }
 
-// The chosen fit against the same method in the other frames (Bae 2002, §4.3 frame kept as the
-// first candidate): the least-squares axis line and the PCA axis refined by the rotational
-// criterion for cylindrical fits, the least-squares centre for spherical ones; `replaces` decides.
+// Clouds of more than twice this many points choose method and frame on an evenly strided
+// subsample of this many (the frame candidates with the F(u, v) net of the first fit), and only
+// the winner is fitted to every point (choosing its own net again).
+constexpr Eigen::Index kFrameScorePoints = 100000;
+
+// The frames to try (Bae 2002, §4.3 frame kept as the first): the least-squares centre and the
+// axis refined by the rotational criterion through it for spherical fits, the least-squares axis
+// line and the PCA axis refined by the rotational criterion for cylindrical ones. A given origin
+// or axis stays fixed in every candidate.
+std::vector<FrameCandidate> frame_list(const Eigen::Matrix3Xd& points, const FrameEstimate& used,
+                                       const FrameOptions& given, bool spherical) {
+  const Eigen::Vector3d origin = used.frame.origin, axis = used.frame.axes.col(2);
+  std::vector<FrameCandidate> list(1);
+  list[0].name = given.axis || given.origin ? "given / quadric" : "quadric";
+  list[0].origin = origin;
+  list[0].axis = axis;
+  list[0].how = used.reason;
+  AxisConstraint fixed;
+  if (given.origin) fixed.point = origin;
+  if (given.axis) fixed.direction = axis;
+  if (spherical) {
+    if (!given.origin) list.push_back(least_squares_centre(points, origin, axis));
+    if (!given.axis) {
+      fixed.point = list.back().origin;
+      list.push_back(profile_refined_axis(points, {{"quadric", fixed.point.value(), axis}}, fixed));
+      if (!given.origin) list.back().name = "least-squares centre, PCA + profile refinement";
+    }
+  } else {
+    list.push_back(
+        least_squares_axis(points, origin, axis, given.origin.has_value(), given.axis.has_value()));
+    list.push_back(profile_refined_axis(
+        points, {{"quadric", origin, axis}, {"least-squares axis", list[1].origin, list[1].axis}},
+        fixed));
+  }
+  return list;
+}
+
+// The options that fit every frame with the first fit's F(u, v) net: the one its revolution test
+// used where F(u) alone was kept, else the chosen (or fitted) net.
+RotationalFitOptions scoring_options(const RotationalFitOptions& o, const FitReport& first,
+                                     bool spherical) {
+  RotationalFitOptions s = o;
+  FunctionFitOptions& f = spherical ? s.spherical.function : s.cylindrical.function;
+  const RevolutionTest& t = first.revolution;
+  const bool tested = t.tested && t.rotational;
+  const int u = tested ? t.size_u : first.net.size_u > 0 ? first.net.size_u : first.size_u;
+  const int v = tested ? t.size_v : first.net.size_v > 0 ? first.net.size_v : first.size_v;
+  f.size_u = std::max(u, f.degree_u + 1);
+  f.size_v = std::max(v, f.degree_v + 1);
+  f.tolerance = 0.0;
+  return s;
+}
+
+// The chosen fit against the same method in the other frames of frame_list, each fitted with its
+// own net, or with the first fit's (`fixed_net`); `replaces` decides, later frames winning ties.
 RotationalFit choose_frame(RotationalFit fit, const Eigen::Matrix3Xd& points,
-                           const RotationalFitOptions& o) {
+                           const RotationalFitOptions& o, bool fixed_net) {
   const bool spherical = fit.method() == FitMethod::spherical;
   const FrameOptions& given = spherical ? o.spherical.frame : o.cylindrical.frame;
-  if ((given.origin && given.axis) || (spherical && given.origin)) return fit;
+  if (given.origin && given.axis) return fit;
   const FrameEstimate used = fit.frame();
-  std::vector<FrameCandidate> list;
-  list.emplace_back();
-  list.back().name = given.axis || given.origin ? "given / quadric" : "quadric";
-  list.back().origin = used.frame.origin;
-  list.back().axis = used.frame.axes.col(2);
-  list.back().how = used.reason;
-  fill(list.back(), fit.report());
-  if (spherical) {
-    list.push_back(least_squares_centre(points, used.frame.origin, used.frame.axes.col(2)));
-  } else {
-    list.push_back(least_squares_axis(points, used.frame.origin, used.frame.axes.col(2),
-                                      given.origin.has_value(), given.axis.has_value()));
-    if (!given.origin && !given.axis)
-      list.push_back(
-          profile_refined_axis(points, {{"quadric", used.frame.origin, used.frame.axes.col(2)},
-                                        {"least-squares axis", list[1].origin, list[1].axis}}));
-  }
+  std::vector<FrameCandidate> list = frame_list(points, used, given, spherical);
+  // With a fixed net the first frame is fitted again with it, so that all compare alike.
+  const RotationalFitOptions base = fixed_net ? scoring_options(o, fit.report(), spherical) : o;
+  fill(list[0], fit.report());
   std::size_t chosen = 0;
   Score best = score(fit.report());
   std::optional<RotationalFit> replacement;
-  for (std::size_t i = 1; i < list.size(); ++i) {
+  for (std::size_t i = fixed_net ? 0 : 1; i < list.size(); ++i) {
     FrameCandidate& c = list[i];
-    RotationalFitOptions again = o;
+    RotationalFitOptions again = base;
     FrameOptions& f = spherical ? again.spherical.frame : again.cylindrical.frame;
     f.origin = c.origin;
     f.axis = c.axis;
@@ -157,7 +200,11 @@ RotationalFit choose_frame(RotationalFit fit, const Eigen::Matrix3Xd& points,
     }
     const FitReport& rep = b.sph ? b.sph->report : b.cyl->report;
     fill(c, rep);
-    if (!replaces(score(rep), best)) continue;
+    if (i == 0) {
+      best = score(rep);
+      continue;
+    }
+    if (!replaces(score(rep), best, true)) continue;
     best = score(rep), chosen = i;
     // Neither the first fit nor an earlier replacement is returned any more: their per-point
     // distances go first (80 MB each at 10^7 points, while the next candidate is fitted).
@@ -193,18 +240,23 @@ RotationalFit fit_chosen_method(const Eigen::Matrix3Xd& points, const Rotational
 
 }  // namespace
 
-RotationalFit fit_rotational(const Eigen::Matrix3Xd& points, const RotationalFitOptions& o) {
+namespace {
+
+// The method (by the quadric type, else by the error) and then the frame (choose_frame) on these
+// points.
+RotationalFit choose_method_and_frame(const Eigen::Matrix3Xd& points, const RotationalFitOptions& o,
+                                      bool fixed_net) {
   bool undecided = false;
-  RotationalFit fit = choose_frame(fit_chosen_method(points, o, &undecided), points, o);
+  RotationalFit fit = choose_frame(fit_chosen_method(points, o, &undecided), points, o, fixed_net);
   if (!undecided) return fit;
-  // The quadric type did not decide the method: the other method in its least-squares frame is
-  // one more candidate.
+  // The quadric type did not decide the method: the other method in its best frame is one more
+  // candidate.
   RotationalFitOptions other_method = o;
   other_method.method =
       fit.method() == FitMethod::spherical ? FitMethod::cylindrical : FitMethod::spherical;
   try {
-    RotationalFit alt =
-        choose_frame(fit_chosen_method(points, other_method, &undecided), points, other_method);
+    RotationalFit alt = choose_frame(fit_chosen_method(points, other_method, &undecided), points,
+                                     other_method, fixed_net);
     for (const FrameCandidate& c : alt.frame_candidates) {
       fit.frame_candidates.push_back(c);
       fit.frame_candidates.back().name = to_string(alt.method()) + " fit, " + c.name;
@@ -219,6 +271,41 @@ RotationalFit fit_rotational(const Eigen::Matrix3Xd& points, const RotationalFit
   } catch (const InputError&) {
   } catch (const NumericalError&) {
   }
+  return fit;
+}
+
+}  // namespace
+
+RotationalFit fit_rotational(const Eigen::Matrix3Xd& points, const RotationalFitOptions& o) {
+  const FrameOptions& given = o.spherical.frame;
+  const bool both_given =
+      given.origin && given.axis && o.cylindrical.frame.origin && o.cylindrical.frame.axis;
+  if (points.cols() <= 2 * kFrameScorePoints || both_given)
+    return choose_method_and_frame(points, o, false);
+  // A large cloud: method and frame chosen on a subsample, the winner fitted to every point.
+  const Eigen::Matrix3Xd sample = strided_columns(points, kFrameScorePoints);
+  const RotationalFit decision = choose_method_and_frame(sample, o, true);
+  RotationalFitOptions final_options = o;
+  final_options.method = decision.method();
+  const LocalFrame& frame = decision.frame().frame;
+  for (FrameOptions* f : {&final_options.spherical.frame, &final_options.cylindrical.frame}) {
+    f->origin = frame.origin;
+    f->axis = frame.axes.col(2);
+    f->reference = frame.axes.col(0);
+  }
+  Attempt a = attempt(decision.method(), points, final_options);
+  if (!a.ok()) std::rethrow_exception(a.error);
+  std::ostringstream why;
+  why << decision.reason << "; method and frame chosen on " << sample.cols() << " of "
+      << points.cols() << " points (frames with a fixed net), then fitted to every point";
+  RotationalFit fit = result(decision.method(), a, why.str());
+  std::visit(
+      [&](auto& f) {
+        f.frame.quadric = decision.frame().quadric;
+        f.frame.reason = decision.frame().reason;
+      },
+      fit.fit);
+  fit.frame_candidates = decision.frame_candidates;
   return fit;
 }
 
