@@ -179,10 +179,10 @@ BENCHMARK(BM_DefaultFit)
     ->Iterations(1)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
-// Measured (2 shared cores, Release, 2025-12-05): 10^5 points 4.4 s; 10^6 8.5–8.9 s wall, 8.6 s
-// CPU, 128 MB peak; 10^7 52–83 s wall (load), 58–60 s CPU, 1158 MB peak (read alone 463 MB):
-// 10^7 / 10^6 = 6–9 wall, 7 CPU. About 4 s of every size is the net selection on its 10^5-sample
-// subsample, done for each of the three frames.
+// Measured (Release, 2 cores shared with two compilers at load 6, 2026-12-05): CPU 10^5 4.7 s,
+// 10^6 5.5 s, 10^7 21.4 s (3.9 ×); wall 7.7 s / 20.1 s / 71.9 s under that load; peak 114 MiB
+// at 10^6, 1043 MiB at 10^7 (read alone 507 MiB). Method and frame are chosen on a 100,000-point
+// subsample above 200,000 points, and one fit touches every point.
 BENCHMARK(BM_DefaultFit)
     ->Arg(10000000)
     ->Iterations(1)

@@ -2,13 +2,15 @@
 // ellipsoid are fitted to within 1.1 times the noise with no more coefficients than the rule (one
 // per 4 samples) allows, the noise estimate matches the σ put in, and a tolerance below it is
 // refused with the numbers (below 0.8 σ̂: σ̂ is along the rays); noiseless data grows the net until
-// the rule stops it.
+// the rule stops it. Through the default fit (frames and all) the same holds.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
+#include <tuple>
 
 #include "src/error.h"
+#include "src/fit/rotational_fit.h"
 #include "src/fit/spherical_fit.h"
 #include "tests/src/fit/fit_test_support.h"
 
@@ -51,6 +53,20 @@ TEST(NetSelection, NoisySphereAndEllipsoidWithDefaultsFitAtTheNoiseLevel) {
     const SphericalFit f = fit_spherical(ellipsoid(k.a, k.b, k.c, 20000, k.sigma, k.seed));
     expect_noise_level_fit(f, k.sigma, 20000);
     EXPECT_EQ(f.report.revolution.rotational, k.rotational) << f.report.revolution.reason;
+  }
+}
+
+// The same clouds through the fit command's default path (method, frame candidates, net by GCV).
+TEST(NetSelection, NoisySphereAndEllipsoidThroughTheDefaultFit) {
+  for (const auto& [a, b, c, sigma, seed] :
+       {std::tuple{25.0, 25.0, 25.0, 0.02, 61u}, std::tuple{30.0, 24.0, 18.0, 0.01, 71u}}) {
+    const RotationalFit f = fit_rotational(ellipsoid(a, b, c, 20000, sigma, seed));
+    RecordProperty("rms_" + std::to_string(seed), test::sci(f.report().error.rms));
+    EXPECT_EQ(f.method(), FitMethod::spherical) << f.reason;
+    EXPECT_LT(f.report().error.rms, 1.1 * sigma) << f.reason;
+    EXPECT_LE(long(f.report().size_u) * f.report().size_v, 20000 / kSamplesPerCoefficient);
+    EXPECT_EQ(f.report().unconverged, 0u);
+    EXPECT_GE(f.frame_candidates.size(), 3u) << f.reason;
   }
 }
 
