@@ -56,7 +56,14 @@ class SurfaceProjector {
     NurbsCurve3d curve;
   };
 
+  // An interior knot of full multiplicity (the surface only C0 across its iso-line) with the
+  // lengths of the knot spans on either side.
+  struct Crease {
+    double at, left, right;
+  };
+
   SurfaceProjection newton(const Eigen::Vector3d& p, double u, double v) const;
+  SurfaceProjection with_crease_restarts(const Eigen::Vector3d& p, SurfaceProjection best) const;
   SurfaceProjection with_edge_fallback(const Eigen::Vector3d& p, SurfaceProjection best) const;
 
   NurbsSurface surface_;
@@ -68,6 +75,7 @@ class SurfaceProjector {
   std::array<bool, 4> degenerate_{};
   double scale_ = 1.0;            // size of the control net, for tolerances
   std::vector<Edge> edges_;       // open boundaries only
+  std::vector<Crease> creases_u_, creases_v_;
 };
 
 // One-off projection (builds a SurfaceProjector).

@@ -78,6 +78,22 @@ Eigen::MatrixXd iso_coefficients(const BSpline& folded, double at, int dim) {
   return folded.point(at).reshaped(dim, folded.dim() / dim);
 }
 
+// The interior knots of multiplicity >= degree (C0 iso-lines), with their neighbouring spans.
+template <class Crease>
+std::vector<Crease> creases(const Knots& knots, int degree) {
+  std::vector<Crease> out;
+  const double front = knots[degree], back = knots[knots.size() - 1 - degree];
+  for (std::size_t i = 0; i < knots.size();) {
+    std::size_t j = i;
+    while (j < knots.size() && knots[j] == knots[i]) ++j;
+    const double at = knots[i];
+    if (degree >= 1 && at > front && at < back && int(j - i) >= degree)
+      out.push_back({at, at - knots[i - 1], knots[j] - at});
+    i = j;
+  }
+  return out;
+}
+
 // Whether a homogeneous control polygon collapses to one point.
 bool collapsed(const Eigen::MatrixXd& h, double tol) {
   const Eigen::Index w = h.rows() - 1;
@@ -154,6 +170,8 @@ SurfaceProjector::SurfaceProjector(NurbsSurface surface, int samples_per_span)
     edges_.push_back({false, s.front_v(), curve(s.degree_u(), s.knots_u(), v0)});
     edges_.push_back({false, s.back_v(), curve(s.degree_u(), s.knots_u(), v1)});
   }
+  creases_u_ = creases<Crease>(s.knots_u(), s.degree_u());
+  creases_v_ = creases<Crease>(s.knots_v(), s.degree_v());
 }
 
 // NURBS Book §6.1, eqs. (6.5)–(6.7): Newton on (r·S_u, r·S_v) = 0 with a descent safeguard
@@ -225,6 +243,22 @@ SurfaceProjection SurfaceProjector::newton(const Eigen::Vector3d& p, double u, d
   return {u, v, point, (point - p).norm()};
 }
 
+// Newton stalls at a C0 crease (the gradient jumps there): a minimum within 1 % of a neighbouring
+// span of a crease is searched again from the middle of the span on either side.
+SurfaceProjection SurfaceProjector::with_crease_restarts(const Eigen::Vector3d& p,
+                                                         SurfaceProjection best) const {
+  const SurfaceProjection found = best;
+  for (const Crease& c : creases_u_)
+    if (std::abs(found.u - c.at) <= 0.01 * std::min(c.left, c.right))
+      for (const double u : {c.at - 0.5 * c.left, c.at + 0.5 * c.right})
+        if (const SurfaceProjection r = newton(p, u, found.v); r.distance < best.distance) best = r;
+  for (const Crease& c : creases_v_)
+    if (std::abs(found.v - c.at) <= 0.01 * std::min(c.left, c.right))
+      for (const double v : {c.at - 0.5 * c.left, c.at + 0.5 * c.right})
+        if (const SurfaceProjection r = newton(p, found.u, v); r.distance < best.distance) best = r;
+  return best;
+}
+
 // A minimum on an open edge is re-searched on every open boundary curve (robust 1D search): the
 // best boundary point may lie on the neighbouring edge, past a corner.
 SurfaceProjection SurfaceProjector::with_edge_fallback(const Eigen::Vector3d& p,
@@ -290,7 +324,7 @@ SurfaceProjection SurfaceProjector::project(const Eigen::Vector3d& p) const {
     const SurfaceProjection r = newton(p, grid_u_[a], grid_v_[b]);
     if (r.distance < best.distance) best = r;
   }
-  return with_edge_fallback(p, best);
+  return with_edge_fallback(p, with_crease_restarts(p, best));
 }
 
 SurfaceProjection SurfaceProjector::project(const Eigen::Vector3d& p, double u0, double v0) const {
@@ -299,7 +333,7 @@ SurfaceProjection SurfaceProjector::project(const Eigen::Vector3d& p, double u0,
   if (!(u0 >= s.front_u() && u0 <= s.back_u() && v0 >= s.front_v() && v0 <= s.back_v()))
     throw InputError("point inversion start (" + std::to_string(u0) + ", " + std::to_string(v0) +
                      "): expected a parameter inside the surface domain");
-  return with_edge_fallback(p, newton(p, u0, v0));
+  return with_edge_fallback(p, with_crease_restarts(p, newton(p, u0, v0)));
 }
 
 SurfaceProjection closest_point(const NurbsSurface& s, const Eigen::Vector3d& p,
