@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <optional>
 #include <string>
+#include <utility>
 
 #include "src/error.h"
 #include "src/fit/corner_detection.h"
@@ -24,16 +26,21 @@ namespace {
 
 // The shortest closed tour through the points: nearest neighbour from the lowest (z, r), which
 // is an end of most profiles (so an open profile's tour returns along one long edge), then 2-opt
-// (Croes 1958).
-std::vector<int> shortest_tour(const Eigen::Matrix2Xd& P) {
+// (Croes 1958). Given two ends (the poles of a profile from axis to axis), the shortest path from
+// the first to the second instead, closed by the edge back along the axis: the shortest closed
+// tour may cut across a groove and leave part of the profile for a second run.
+std::vector<int> shortest_tour(const Eigen::Matrix2Xd& P,
+                               std::optional<std::pair<int, int>> ends = std::nullopt) {
   const int m = static_cast<int>(P.cols());
   int first = 0;
   for (int j = 1; j < m; ++j)
     if (P(0, j) < P(0, first) || (P(0, j) == P(0, first) && P(1, j) < P(1, first))) first = j;
+  if (ends) first = ends->first;
   std::vector<int> tour{first};
   std::vector<char> used(static_cast<std::size_t>(m), 0);
   used[first] = 1;
-  for (int s = 1; s < m; ++s) {
+  if (ends) used[ends->second] = 1;
+  for (int s = ends ? 2 : 1; s < m; ++s) {
     int best = -1;
     double bd = 0.0;
     for (int j = 0; j < m; ++j)
@@ -42,11 +49,14 @@ std::vector<int> shortest_tour(const Eigen::Matrix2Xd& P) {
     used[best] = 1;
     tour.push_back(best);
   }
+  if (ends) tour.push_back(ends->second);
   auto d = [&](int a, int b) { return (P.col(tour[a]) - P.col(tour[b % m])).norm(); };
+  // With ends the closing edge (m − 1 → 0) stays: j stops before it.
+  const int last_j = ends ? m - 2 : m - 1;
   for (int pass = 0, improved = 1; improved && pass < 100 && m >= 4; ++pass) {
     improved = 0;
     for (int i = 0; i + 2 < m; ++i)
-      for (int j = i + 2; j < m; ++j) {
+      for (int j = i + 2; j <= last_j; ++j) {
         if (i == 0 && j == m - 1) continue;
         if (d(i, i + 1) + d(j, j + 1) >
             d(i, j) + d(i + 1, j + 1) + 1e-12 * (d(i, i + 1) + d(j, j + 1))) {
@@ -102,7 +112,12 @@ MeridianProfile ring_profile(const Eigen::Matrix2Xd& zr, const std::vector<int>&
     if (label[k] >= 0) centre.col(label[k]) += zr.col(k), count[label[k]] += 1;
   for (int c = 0; c < m; ++c) centre.col(c) /= count[c];
   const double on_axis = std::max(10 * merge, 1e-9 * out.size);
-  const std::vector<int> tour = shortest_tour(centre);
+  std::vector<int> poles;
+  for (int c = 0; c < m; ++c)
+    if (centre(1, c) <= on_axis) poles.push_back(c);
+  const std::vector<int> tour = poles.size() == 2 && m >= 4
+                                    ? shortest_tour(centre, std::pair{poles[0], poles[1]})
+                                    : shortest_tour(centre);
   // Cut the tour where it runs along the axis, and next to a pole that is not yet an end.
   std::vector<char> cut(static_cast<std::size_t>(m), 0);  // edge tour[i] → tour[i+1]
   auto axis_pt = [&](int i) { return centre(1, tour[(i + m) % m]) <= on_axis; };
@@ -282,7 +297,8 @@ MeridianProfile recover_meridian_profile(const Eigen::Matrix2Xd& zr, const Merid
   MeridianProfile out;
   out.size = (zr.rowwise().maxCoeff() - zr.rowwise().minCoeff()).norm();
   out.tolerance = o.tolerance > 0 ? o.tolerance : 1e-4 * out.size;
-  const double merge = o.merge > 0 ? o.merge : 1e-7 * out.size;
+  const double merge =
+      o.merge > 0 ? o.merge : std::max({1e-7 * out.size, 1e-2 * out.tolerance, 8 * o.rounding});
   std::vector<int> label;
   const int all = cluster_points(zr, merge, 1, label);
   std::vector<int> size(static_cast<std::size_t>(all), 0);

@@ -17,7 +17,10 @@ struct MeridianOptions {
   double tolerance = 0.0;  // max distance of the profile points to the curve; <= 0: 1e-4·size
   int degree = 3;
   double corner_angle = 0.5235987755982988;  // 30°
-  double merge = 0.0;                        // ring cluster radius; <= 0: 1e-7·size
+  // Ring cluster radius; <= 0: max(1e-7·size, 1e-2·tolerance, 8·rounding), above the spread the
+  // coordinates' rounding (coordinate_rounding.h) gives a ring.
+  double merge = 0.0;
+  double rounding = 0.0;
   bool axis_ends = true;        // open ends within the snap distance of r = 0 go to r = 0 exactly
   int max_structure_points = 4000;  // scan bands are thinned and ordered on a strided subset
   int max_scan_points = 60000;      // ... and the profile refitted on one of this size

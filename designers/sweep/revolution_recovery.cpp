@@ -2,12 +2,14 @@
 // errors.
 #include "designers/sweep/revolution_recovery.h"
 
+#include <algorithm>
 #include <chrono>
 #include <string>
 
 #include "designers/sweep/azimuthal_coverage.h"
 #include "designers/sweep/recovery_steps.h"
 #include "src/error.h"
+#include "src/fit/coordinate_rounding.h"
 #include "src/nurbs/surface_of_revolution.h"
 
 namespace polarform {
@@ -45,19 +47,23 @@ RevolutionRecovery recover_revolution(const Eigen::Matrix3Xd& points, const Revo
   mo.degree = o.degree;
   mo.corner_angle = o.corner_angle;
   mo.threads = o.threads;
+  mo.rounding = coordinate_rounding(points);
   if (o.refine_axis) {
     const Eigen::Matrix3Xd sub = strided(points, o.max_axis_points);
     AxisRefinementOptions ro;
     ro.size = out.size;
     ro.threads = o.threads;
-    // Ring-structured meshes: exact clusters decide (accepted when they collapse), from a merge
-    // radius below the spacing of dense rings (1e-4 of the size: 1000 rings along a profile are
-    // ~1e-3 apart) that grows until the rings of a start axis that is off collapse into clusters.
+    // Ring-structured meshes: exact clusters decide (accepted when they collapse to the
+    // coordinates' rounding, at most 1 % of the tolerance), from a merge radius below the spacing
+    // of dense rings (1e-4 of the size: 1000 rings along a profile are ~1e-3 apart) that grows
+    // until the rings of a start axis that is off collapse into clusters.
+    const double collapsed = std::max(
+        {1e-9 * out.size, 4 * mo.rounding, std::min(1e-2 * out.tolerance, 1e-6 * out.size)});
     auto rings = [&](const AxisLine& from) {
       AxisRefinement r;
       for (double merge : {1e-4, 1e-3, 4e-3, 1.6e-2}) {
         r = refine_axis_by_rings(sub, from, merge * out.size, ro);
-        if (r.converged && r.clustered >= 0.8 && r.rms_after <= 1e-9 * out.size)
+        if (r.converged && r.clustered >= 0.8 && r.rms_after <= collapsed)
           return std::pair<AxisRefinement, bool>{r, true};
       }
       return std::pair<AxisRefinement, bool>{r, false};

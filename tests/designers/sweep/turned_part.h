@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -75,6 +76,42 @@ inline Eigen::Matrix3Xd ring_mesh(const std::vector<Eigen::Vector2d>& profile, c
     }
     for (int s = 0; s < segments; ++s)
       v.push_back(place(axis, q.x(), q.y(), 2 * std::numbers::pi * s / segments + 0.1));
+  }
+  Eigen::Matrix3Xd P(3, static_cast<Eigen::Index>(v.size()));
+  for (std::size_t i = 0; i < v.size(); ++i) P.col(static_cast<Eigen::Index>(i)) = v[i];
+  return P;
+}
+
+// A grooved bar as CAD tessellates it (mm): a flat end on the axis, a fillet of radius 2 (8
+// segments) into a cylinder r = 20, a cone down to r = 12, a groove 2 deep and 5 wide, a cylinder,
+// a flat end on the axis.
+inline std::vector<Eigen::Vector2d> grooved_bar_profile() {
+  std::vector<Eigen::Vector2d> p{{0, 0}, {0, 18}};
+  for (int k = 1; k <= 8; ++k) {
+    const double a = -std::numbers::pi / 2 + std::numbers::pi / 2 * k / 8;
+    p.emplace_back(2 + 2 * std::sin(a), 18 + 2 * std::cos(a));
+  }
+  p.insert(p.end(),
+           {{30, 20}, {40, 12}, {45, 12}, {45, 10}, {50, 10}, {50, 12}, {70, 12}, {70, 0}});
+  return p;
+}
+
+// A tessellator's rings: each profile vertex a ring with as many segments as keep the chord
+// error below `chord` (at least 8), each ring turned by its own phase, the vertices rounded to
+// float32 as binary STL stores them.
+inline Eigen::Matrix3Xd float_ring_mesh(const std::vector<Eigen::Vector2d>& profile,
+                                        const AxisLine& axis, double chord) {
+  std::vector<Eigen::Vector3d> v;
+  for (std::size_t i = 0; i < profile.size(); ++i) {
+    const double z = profile[i].x(), r = profile[i].y();
+    const int n =
+        r == 0.0
+            ? 1
+            : std::max(8, static_cast<int>(std::ceil(std::numbers::pi / std::acos(1 - chord / r))));
+    for (int s = 0; s < n; ++s)
+      v.push_back(place(axis, z, r, 0.37 * static_cast<double>(i) + 2 * std::numbers::pi * s / n)
+                      .cast<float>()
+                      .cast<double>());
   }
   Eigen::Matrix3Xd P(3, static_cast<Eigen::Index>(v.size()));
   for (std::size_t i = 0; i < v.size(); ++i) P.col(static_cast<Eigen::Index>(i)) = v[i];
