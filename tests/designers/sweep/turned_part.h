@@ -98,20 +98,24 @@ inline std::vector<Eigen::Vector2d> grooved_bar_profile() {
 
 // A tessellator's rings: each profile vertex a ring with as many segments as keep the chord
 // error below `chord` (at least 8), each ring turned by its own phase, the vertices rounded to
-// float32 as binary STL stores them.
-inline Eigen::Matrix3Xd float_ring_mesh(const std::vector<Eigen::Vector2d>& profile,
-                                        const AxisLine& axis, double chord) {
+// float32 as binary STL stores them (decimals = 0) or to `decimals` places as a text mesh does.
+inline Eigen::Matrix3Xd tessellated_ring_mesh(const std::vector<Eigen::Vector2d>& profile,
+                                              const AxisLine& axis, double chord,
+                                              int decimals = 0) {
   std::vector<Eigen::Vector3d> v;
+  const double scale = std::pow(10.0, decimals);
   for (std::size_t i = 0; i < profile.size(); ++i) {
     const double z = profile[i].x(), r = profile[i].y();
     const int n =
         r == 0.0
             ? 1
             : std::max(8, static_cast<int>(std::ceil(std::numbers::pi / std::acos(1 - chord / r))));
-    for (int s = 0; s < n; ++s)
-      v.push_back(place(axis, z, r, 0.37 * static_cast<double>(i) + 2 * std::numbers::pi * s / n)
-                      .cast<float>()
-                      .cast<double>());
+    for (int s = 0; s < n; ++s) {
+      const Eigen::Vector3d q =
+          place(axis, z, r, 0.37 * static_cast<double>(i) + 2 * std::numbers::pi * s / n);
+      v.push_back(decimals == 0 ? Eigen::Vector3d(q.cast<float>().cast<double>())
+                                : Eigen::Vector3d((q * scale).array().round() / scale));
+    }
   }
   Eigen::Matrix3Xd P(3, static_cast<Eigen::Index>(v.size()));
   for (std::size_t i = 0; i < v.size(); ++i) P.col(static_cast<Eigen::Index>(i)) = v[i];
