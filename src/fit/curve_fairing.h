@@ -71,6 +71,12 @@ struct KjellanderFairing {
 KjellanderFairing kjellander_fair(const Eigen::MatrixXd& values, const Eigen::VectorXd& parameters,
                                   const FairingOptions& options, const CubicEnds& ends = {});
 
+// Kjellander on a cubic B-spline (any dimension): its values at its distinct breakpoints are the
+// data, its end tangents kept (so a closed curve stays C1 at its seam); total_bound is the largest
+// data move. Fewer than 5 breakpoints leave it as it is. Throws InputError for a degree other
+// than 3 or a multiple interior knot.
+CurveFairing kjellander_fair_spline(const BSpline& c, const FairingOptions& options);
+
 struct SurfaceFairing {
   BSplineSurface surface;
   std::vector<FairingStep> steps;  // along u: knots of u; along v: knots of v

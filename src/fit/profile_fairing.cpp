@@ -19,32 +19,6 @@ double max_jump(const BSpline& F) {
   return m;
 }
 
-// Kjellander on F's values at its distinct breakpoints, the end tangents kept.
-BSpline kjellander_on_function(const BSpline& F, const FairingOptions& o,
-                               std::vector<FairingStep>& steps) {
-  if (F.degree() != 3)
-    throw InputError("--fair kjellander: F has degree " + std::to_string(F.degree()) +
-                     "; Kjellander's fairing interpolates cubics (use --fair farin, or degree 3)");
-  std::vector<double> t;
-  for (const Breakpoint& b : breakpoints(F.knots())) {
-    if (b.value > F.front() && b.value < F.back() && b.multiplicity != 1)
-      throw InputError("--fair kjellander: F has a multiple knot at u = " +
-                       std::to_string(b.value) + "; use --fair farin");
-    t.push_back(b.value);
-  }
-  const Eigen::VectorXd params =
-      Eigen::Map<const Eigen::VectorXd>(t.data(), static_cast<Eigen::Index>(t.size()));
-  Eigen::MatrixXd values(F.dim(), params.size());
-  for (Eigen::Index k = 0; k < params.size(); ++k) values.col(k) = F.point(params[k]);
-  CubicEnds ends;
-  ends.start_tangent = F.derivatives(F.front(), 1).col(1);
-  ends.end_tangent = F.derivatives(F.back(), 1).col(1);
-  if (params.size() < 5) return F;  // too few breakpoints to move one
-  KjellanderFairing k = kjellander_fair(values, params, o, ends);
-  steps = std::move(k.steps);
-  return k.spline;
-}
-
 }  // namespace
 
 std::string fairing_method_name(FairingMethod method) {
@@ -71,7 +45,9 @@ ProfileFairing fair_polar_curve(PolarCurveFit& fit, const Eigen::Matrix2Xd& poin
     F1 = std::move(f.spline);
     r.steps = std::move(f.steps);
   } else {
-    F1 = kjellander_on_function(F0, o, r.steps);
+    CurveFairing k = kjellander_fair_spline(F0, o);
+    F1 = std::move(k.spline);
+    r.steps = std::move(k.steps);
   }
   r.max_jump_after = max_jump(F1);
   const NurbsCurve2d before = fit.curve;

@@ -204,9 +204,10 @@ void add_fit_command(CLI::App& app) {
                   "sphere-like form or circle (default auto: when an F-test of F(u) against "
                   "F(u, v) finds no variation beyond the noise at the 0.1 % level)");
   add_interrogate_option(*cmd, args->interrogate);
-  cmd->add_option("--fair", args->fair,
-                  "kjellander|farin: fair a profile's F after the fit (MIT §8.2.3); curvature.svg "
-                  "shows before and after");
+  cmd->add_option(
+      "--fair", args->fair,
+      "kjellander|farin: fair F after the fit (MIT §8.2.3-8.2.4): a profile's (curvature.svg "
+      "shows before and after) or a surface's rows and columns");
   cmd->add_option("--fair-tol", args->fair_tol,
                   "how far fairing may move the curve [mm] (default 3 × the fit's rms error)");
   cmd->add_option("--fair-passes", args->fair_passes,
