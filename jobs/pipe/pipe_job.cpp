@@ -42,11 +42,6 @@ NurbsCurve3d spine_through(const Eigen::Matrix3Xd& p, bool closed) {
 
 namespace {
 
-void check_radius(const PipeJobOptions& o) {
-  if (!(o.radius > 0) || !std::isfinite(o.radius))
-    throw InputError("--radius: expected a positive length in mm");
-}
-
 double diameter(const Eigen::Matrix3Xd& points) {
   return (points.rowwise().maxCoeff() - points.rowwise().minCoeff()).norm();
 }
@@ -84,15 +79,22 @@ void bound_and_skin(PipeJobResult& r, const PipeJobOptions& o, double size,
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// The result's input and options, after checking the radius.
+PipeJobResult started(const std::filesystem::path& input, const PipeJobOptions& o) {
+  if (!(o.radius > 0) || !std::isfinite(o.radius))
+    throw InputError("--radius: expected a positive length in mm");
+  PipeJobResult r;
+  r.input = input;
+  r.radius = o.radius;
+  r.frame = o.frame;
+  return r;
+}
+
 }  // namespace
 
 PipeJobResult run_pipe_job(const std::filesystem::path& file, const PipeJobOptions& o) {
-  check_radius(o);
   const auto t0 = std::chrono::steady_clock::now();
-  PipeJobResult r;
-  r.input = file;
-  r.radius = o.radius;
-  r.frame = o.frame;
+  PipeJobResult r = started(file, o);
   r.points = read_spine_csv(file);
   const double size = diameter(r.points);
   const bool ends_meet =
@@ -113,12 +115,8 @@ PipeJobResult run_pipe_job(const std::filesystem::path& file, const PipeJobOptio
 
 PipeJobResult run_pipe_job(const std::filesystem::path& input, const NurbsCurve3d& spine,
                            const PipeJobOptions& o) {
-  check_radius(o);
   const auto t0 = std::chrono::steady_clock::now();
-  PipeJobResult r;
-  r.input = input;
-  r.radius = o.radius;
-  r.frame = o.frame;
+  PipeJobResult r = started(input, o);
   r.spine = spine;
   r.chord_length_parameter = false;
   r.points.resize(3, spine.size());

@@ -52,6 +52,12 @@ std::vector<SplineKnotJump> top_derivative_jumps(const BSpline& c) {
   return out;
 }
 
+double max_top_derivative_jump(const BSpline& c) {
+  double m = 0.0;
+  for (const SplineKnotJump& j : top_derivative_jumps(c)) m = std::max(m, j.jump);
+  return m;
+}
+
 CurveFairing farin_fair(const BSpline& c, const FairingOptions& o, int point_dim) {
   check(o, "farin_fair");
   CurveFairing r{c, {}, 0.0};

@@ -24,6 +24,8 @@ struct SplineKnotJump {
 // The jump of the p-th derivative at every distinct interior knot, in order (exact: the p-th
 // derivative is piecewise constant; NURBS Book A3.3 applied p times).
 std::vector<SplineKnotJump> top_derivative_jumps(const BSpline& c);
+// The largest of them (0 without interior knots).
+double max_top_derivative_jump(const BSpline& c);
 
 struct FairingStep {
   double u;  // the knot faired (Kjellander: the data parameter)

@@ -11,34 +11,29 @@
 
 namespace polarform {
 
-namespace {
-
-double max_jump(const BSpline& F) {
-  double m = 0.0;
-  for (const SplineKnotJump& j : top_derivative_jumps(F)) m = std::max(m, j.jump);
-  return m;
-}
-
-}  // namespace
-
 std::string fairing_method_name(FairingMethod method) {
   return method == FairingMethod::farin ? "farin" : "kjellander";
+}
+
+double fairing_tolerance(const ProfileFairingOptions& options, double rms) {
+  const double t = options.tolerance > 0 ? options.tolerance : 3.0 * rms;
+  if (!(t > 0))
+    throw InputError(
+        "fairing: the fit has no residual to estimate a tolerance from; give --fair-tol");
+  return t;
 }
 
 ProfileFairing fair_polar_curve(PolarCurveFit& fit, const Eigen::Matrix2Xd& points,
                                 const ProfileFairingOptions& options) {
   ProfileFairing r;
   r.method = options.method;
-  r.tolerance = options.tolerance > 0 ? options.tolerance : 3.0 * fit.report.error.rms;
-  if (!(r.tolerance > 0))
-    throw InputError(
-        "fairing: the fit has no residual to estimate a tolerance from; give --fair-tol");
+  r.tolerance = fairing_tolerance(options, fit.report.error.rms);
   FairingOptions o;
   o.tolerance = r.tolerance;
   o.max_passes = options.max_passes;
   const BSpline& F0 = fit.F.spline();
   o.fixed_end_points = fit.closed ? F0.degree() : 0;
-  r.max_jump_before = max_jump(F0);
+  r.max_jump_before = max_top_derivative_jump(F0);
   BSpline F1 = F0;
   if (options.method == FairingMethod::farin) {
     CurveFairing f = farin_fair(F0, o);
@@ -49,7 +44,7 @@ ProfileFairing fair_polar_curve(PolarCurveFit& fit, const Eigen::Matrix2Xd& poin
     F1 = std::move(k.spline);
     r.steps = std::move(k.steps);
   }
-  r.max_jump_after = max_jump(F1);
+  r.max_jump_after = max_top_derivative_jump(F1);
   const NurbsCurve2d before = fit.curve;
   fit.F = BSplineFunction(F1);
   fit.curve = polar_product_curve(fit.F, fit.base, fit.centre);

@@ -15,21 +15,15 @@ namespace polarform {
 
 namespace {
 
-double max_jump(const BSpline& c) {
-  double m = 0.0;
-  for (const SplineKnotJump& j : top_derivative_jumps(c)) m = std::max(m, j.jump);
-  return m;
-}
-
 // One direction of the net as a curve (`along` is F.along_u() or F.along_v()), faired.
 BSpline fair_direction(const BSpline& along, FairingMethod method, const FairingOptions& o,
                        NetDirectionFairing& out) {
-  out.max_jump_before = max_jump(along);
+  out.max_jump_before = max_top_derivative_jump(along);
   CurveFairing f =
       method == FairingMethod::farin ? farin_fair(along, o, 1) : kjellander_fair_spline(along, o);
   out.steps = std::move(f.steps);
   out.bound = f.total_bound;
-  out.max_jump_after = max_jump(f.spline);
+  out.max_jump_after = max_top_derivative_jump(f.spline);
   return std::move(f.spline);
 }
 
@@ -45,14 +39,6 @@ BSplineSurface fair_net(const BSplineSurface& F, const ProfileFairingOptions& op
   o.fixed_end_points = fixed_v;
   return BSplineSurface::from_along_v(fair_direction(Fu.along_v(), options.method, o, r.v),
                                       Fu.degree_u(), Fu.knots_u(), Fu.dim());
-}
-
-double start_tolerance(const FitReport& report, const ProfileFairingOptions& options) {
-  const double t = options.tolerance > 0 ? options.tolerance : 3.0 * report.error.rms;
-  if (!(t > 0))
-    throw InputError(
-        "fairing: the fit has no residual to estimate a tolerance from; give --fair-tol");
-  return t;
 }
 
 double deviation(const NurbsSurface& a, const NurbsSurface& b) {
@@ -101,27 +87,39 @@ void remeasure(FitReport& report, const ProductGeometry& geometry, const Eigen::
   report.restarted = d.restarted;
 }
 
+// The fairing of either fit: F faired (u keeps `fixed_u` end rows), S rebuilt by `multiply`
+// (F ↦ the local NURBS), its seam and move measured, the error measured again on `geometry`.
+template <class Fit, class Multiply, class Geometry, class StartParameters>
+SurfaceFitFairing fair_fit(Fit& fit, const Eigen::Matrix3Xd& points,
+                           const ProfileFairingOptions& options, int fixed_u, Multiply&& multiply,
+                           Geometry&& geometry, StartParameters&& start) {
+  SurfaceFitFairing r;
+  r.method = options.method;
+  r.tolerance = fairing_tolerance(options, fit.report.error.rms);
+  r.error_before = fit.report.error.max;
+  fit.F = fair_net(fit.F, options, r.tolerance, fixed_u, fit.closed ? fit.F.degree_v() : 0, r);
+  const NurbsSurface before = fit.surface;
+  const NurbsSurface local = multiply(fit.F);
+  if (fit.closed) fit.seam = seam_continuity(local);
+  fit.surface = fit.frame.frame.to_global(local);
+  r.measured_deviation = deviation(fit.surface, before);
+  remeasure(fit.report, geometry(fit.F), fit.frame.frame.to_local(points), start);
+  return r;
+}
+
 }  // namespace
 
 SurfaceFitFairing fair_cylindrical_fit(CylindricalFit& fit, const Eigen::Matrix3Xd& points,
                                        const ProfileFairingOptions& options) {
-  SurfaceFitFairing r;
-  r.method = options.method;
-  r.tolerance = start_tolerance(fit.report, options);
-  r.error_before = fit.report.error.max;
-  fit.F = fair_net(fit.F, options, r.tolerance, 0, fit.closed ? fit.F.degree_v() : 0, r);
-  const NurbsSurface before = fit.surface;
-  const NurbsSurface local = cylindrical_product(fit.F, fit.base.surface());
-  if (fit.closed) fit.seam = seam_continuity(local);
-  fit.surface = fit.frame.frame.to_global(local);
-  r.measured_deviation = deviation(fit.surface, before);
   const BaseCylinder& base = fit.base;
-  remeasure(fit.report, ProductGeometry::cylindrical(fit.F, base), fit.frame.frame.to_local(points),
-            [&](const Eigen::Vector3d& p) {
-              const double z = std::clamp(p.z(), base.z_start(), base.z_end());
-              return base.parameters(azimuth_in(base.azimuth(), std::atan2(p.y(), p.x())), z);
-            });
-  return r;
+  return fair_fit(
+      fit, points, options, 0,
+      [&](const BSplineSurface& F) { return cylindrical_product(F, base.surface()); },
+      [&](const BSplineSurface& F) { return ProductGeometry::cylindrical(F, base); },
+      [&](const Eigen::Vector3d& p) {
+        const double z = std::clamp(p.z(), base.z_start(), base.z_end());
+        return base.parameters(azimuth_in(base.azimuth(), std::atan2(p.y(), p.x())), z);
+      });
 }
 
 SurfaceFitFairing fair_spherical_fit(SphericalFit& fit, const Eigen::Matrix3Xd& points,
@@ -129,27 +127,22 @@ SurfaceFitFairing fair_spherical_fit(SphericalFit& fit, const Eigen::Matrix3Xd& 
   if (fit.north_cap || fit.south_cap)
     throw InputError(
         "--fair: this spherical fit closes a pole with a cap, which is built from the surface "
-        "it closes; fair a fit without caps (--pole none|g0|g1)");
-  SurfaceFitFairing r;
-  r.method = options.method;
-  r.tolerance = start_tolerance(fit.report, options);
-  r.error_before = fit.report.error.max;
-  fit.F =
-      fair_net(fit.F, options, r.tolerance, fit.F.degree_u(), fit.closed ? fit.F.degree_v() : 0, r);
-  const NurbsSurface before = fit.surface;
-  const NurbsSurface local = product(fit.F, fit.base.surface());
-  if (fit.closed) fit.seam = seam_continuity(local);
-  fit.surface = fit.frame.frame.to_global(local);
-  r.measured_deviation = deviation(fit.surface, before);
+        "it closes; fair a fit without caps (--pole none|g0)");
+  if (fit.north == PoleTreatment::g1 || fit.south == PoleTreatment::g1)
+    throw InputError(
+        "--fair: this spherical fit closes a pole with G1 continuity, which fairing along v "
+        "would not keep (a G0 pole's constant row it does); use --pole none|g0");
   const BaseSphere& base = fit.base;
   const std::vector<double>& phis = base.meridian().breakpoints();
-  remeasure(fit.report, ProductGeometry::spherical(fit.F, base), fit.frame.frame.to_local(points),
-            [&](const Eigen::Vector3d& p) {
-              const double phi =
-                  std::clamp(std::atan2(p.head<2>().norm(), p.z()), phis.front(), phis.back());
-              return base.parameters(phi, azimuth_in(base.azimuth(), std::atan2(p.y(), p.x())));
-            });
-  return r;
+  return fair_fit(
+      fit, points, options, fit.F.degree_u(),
+      [&](const BSplineSurface& F) { return product(F, base.surface()); },
+      [&](const BSplineSurface& F) { return ProductGeometry::spherical(F, base); },
+      [&](const Eigen::Vector3d& p) {
+        const double phi =
+            std::clamp(std::atan2(p.head<2>().norm(), p.z()), phis.front(), phis.back());
+        return base.parameters(phi, azimuth_in(base.azimuth(), std::atan2(p.y(), p.x())));
+      });
 }
 
 }  // namespace polarform

@@ -65,8 +65,9 @@ void run(const PipeArgs& a) {
   for (const std::string& w : warnings) std::cerr << "polarform: warning: " << w << "\n";
   if (!a.quiet) {
     const PipeBounds& b = r.bounds;
-    std::printf("%s: %ld points, %s spine %.6g mm long, κ_max %.6g 1/mm\n",
+    std::printf("%s: %ld %s, %s spine %.6g mm long, κ_max %.6g 1/mm\n",
                 r.input.filename().string().c_str(), static_cast<long>(r.points.cols()),
+                r.chord_length_parameter ? "points" : "control points",
                 r.closed ? "closed" : "open", r.length, r.curvature.kappa_max);
     std::printf(
         "radius bound δ = %.6g mm (%s); local %.6g, end-end %.6g, body-body %.6g, "

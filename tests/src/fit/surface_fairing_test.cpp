@@ -114,5 +114,29 @@ TEST(SurfaceFairing, KjellanderLowersTheLargestJumpsWithinTheTolerance) {
   EXPECT_LT(fit.seam.gap, 1e-12 * 15);
 }
 
+TEST(SurfaceFairing, ASphericalZoneIsFairedWithinItsBound) {
+  // A lobed sphere-like zone (no pole in the data) with noise σ = 0.02, fitted on 10 × 16.
+  Eigen::Matrix3Xd p = test::spherical_cloud(
+      [](double phi, double t) { return 30 + 1.5 * std::cos(3 * t) * std::sin(phi); }, 20000, 0.4,
+      kPi - 0.4, 0, 2 * kPi, 43);
+  test::add_noise(p, 0.02, 44);
+  SphericalFitOptions so;
+  so.function.size_u = 10;
+  so.function.size_v = 16;
+  so.frame.origin = Eigen::Vector3d::Zero();
+  so.frame.axis = Eigen::Vector3d::UnitZ();
+  SphericalFit fit = fit_spherical(p, so);
+  ProfileFairingOptions o;
+  o.tolerance = 0.2;
+  const SurfaceFitFairing r = fair_spherical_fit(fit, p, o);
+  RecordProperty("passes", static_cast<int>(r.u.steps.size() + r.v.steps.size()));
+  RecordProperty("deviation", test::sci(r.measured_deviation));
+  ASSERT_GT(r.u.steps.size() + r.v.steps.size(), 0u);
+  EXPECT_LE(r.measured_deviation, r.u.bound + r.v.bound);
+  EXPECT_LE(r.u.bound + r.v.bound, r.tolerance);
+  EXPECT_LE(fit.report.error.max, r.error_before + r.measured_deviation);
+  EXPECT_EQ(fit.report.unconverged, 0u);
+}
+
 }  // namespace
 }  // namespace polarform
