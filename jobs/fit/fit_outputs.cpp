@@ -373,6 +373,8 @@ std::map<std::string, std::string> render_fit_outputs(const FitJobResult& r) {
                                  profile->before_fairing ? &*profile->before_fairing : nullptr));
     content["curvature.csv"] = interrogation_csv(profile->interrogation);
   }
+  if (r.surface_fairing)
+    content["fairing.svg"] = svg_document(surface_fairing_figure(*r.surface_fairing));
   if (r.interrogation)
     for (const auto& [name, text] :
          interrogation_x3d(*r.interrogation, r.input.filename().string()))

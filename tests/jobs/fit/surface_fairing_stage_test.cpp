@@ -37,6 +37,13 @@ TEST(SurfaceFairingStage, ANoisyVaseIsFairedAndReported) {
   EXPECT_EQ(j["fairing"]["passes"].get<std::size_t>(), f.u.steps.size() + f.v.steps.size());
   EXPECT_EQ(j["fairing"]["knots_faired"].size(), f.u.steps.size() + f.v.steps.size());
   EXPECT_EQ(j["fairing"]["measured_deviation_mm"].get<double>(), f.measured_deviation);
+  const auto content = render_fit_outputs(r);
+  ASSERT_TRUE(content.count("fairing.svg"));
+  EXPECT_FALSE(render_fit_outputs(plain).count("fairing.svg"));
+  const Figure fig = surface_fairing_figure(f);
+  ASSERT_EQ(fig.panels().size(), 2u);
+  EXPECT_EQ(fig.panels()[0].series()[0].y.size(), f.u.steps.size());
+  EXPECT_EQ(fig.panels()[1].series()[1].y.size(), f.v.steps.size());
 }
 
 TEST(SurfaceFairingStage, ASphericalFitWithAPoleCapIsRefusedByName) {
