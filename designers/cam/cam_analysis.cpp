@@ -8,6 +8,8 @@
 #include <string>
 
 #include "src/error.h"
+#include "src/nurbs/curve_interpolation.h"
+#include "src/nurbs/pipe_surface.h"
 
 namespace polarform {
 namespace {
@@ -60,6 +62,35 @@ Extremum min_radius(Extremum max_curvature) {
 }
 
 }  // namespace
+
+// MIT 13.472J (8.46) on the pitch curve: the roller as a planar pipe (M7).
+PitchPipeBound pitch_pipe_bound(const PlateCam& cam, int samples) {
+  std::vector<double> t = uniform_angles(samples);  // InputError below 2
+  t.push_back(kTwoPi);
+  for (const MotionSegment& s : cam.program().segments()) t.push_back(s.start());
+  std::sort(t.begin(), t.end());
+  // Nodes closer than 1e-9 rad are one (a boundary on the grid).
+  t.erase(std::unique(t.begin(), t.end(), [](double a, double b) { return b - a < 1e-9; }),
+          t.end());
+  Eigen::MatrixXd points = Eigen::MatrixXd::Zero(3, static_cast<Eigen::Index>(t.size()));
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    Eigen::Vector2d c;
+    cam.pitch(std::min(t[k], kTwoPi), 0, &c);
+    points.col(static_cast<Eigen::Index>(k)).head<2>() = c;
+  }
+  Eigen::Vector2d d[2];
+  cam.pitch(0.0, 1, d);
+  CubicEnds ends;
+  ends.start_tangent = Eigen::VectorXd(Eigen::Vector3d(d[1].x(), d[1].y(), 0.0));
+  ends.end_tangent = ends.start_tangent;
+  const BSpline spline = interpolate_cubic(
+      points, Eigen::Map<const Eigen::VectorXd>(t.data(), static_cast<Eigen::Index>(t.size())),
+      ends);
+  NurbsCurve3d::Points control;
+  for (int i = 0; i < spline.size(); ++i) control.push_back(spline.coefs().col(i));
+  const SpineCurvature k = max_curvature(NurbsCurve3d(spline.degree(), spline.knots(), control));
+  return {k.kappa_max, 1.0 / k.kappa_max};
+}
 
 std::vector<double> uniform_angles(int count) {
   if (count < 2) throw InputError("cam analysis: need at least 2 angles, got " + std::to_string(count));

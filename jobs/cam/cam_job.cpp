@@ -317,7 +317,8 @@ CamAnalysisStage analyse_cam(const CamDesignStage& design, const CamJobOptions& 
   for (double theta : a.angles)
     a.kinematics.push_back(design.program.kinematics(theta, design.project.cam.rpm));
   if (const auto* plate = std::get_if<PlateCam>(&design.cam)) {
-    PlateCamAnalysis p{analyse(*plate, a.angles), {}};
+    PlateCamAnalysis p{analyse(*plate, a.angles), {}, {}};
+    if (has_roller(plate->follower().kind)) p.pipe_bound = pitch_pipe_bound(*plate);
     sample_plate(*plate, options.curve_samples, a.curves, p.curves);
     if (design.project.load)
       a.dynamics = plate_dynamics(design, a.curves, p.curves, options.curve_samples);

@@ -77,6 +77,8 @@ struct PlateCurves {
 struct PlateCamAnalysis {
   CamAnalysis analysis;  // extremes, and one CamSample per grid angle
   PlateCurves curves;
+  // Roller followers: the roller as a pipe around the pitch curve (cam_analysis.h).
+  std::optional<PitchPipeBound> pipe_bound;
 };
 
 struct CylindricalCamAnalysis {

@@ -145,6 +145,8 @@ std::vector<KeyFigure> cam_key_results(const CamDesignStage& design,
     if (has_roller(cam.follower.kind))
       out.push_back(
           {"min radius of curvature, pitch curve", at(p->analysis.min_convex_pitch_radius)});
+    if (const auto& b = p->pipe_bound)
+      out.push_back({"pipe bound 1/κ_max, pitch curve (|κ|, either side)", mm(b->r_local)});
     out.push_back({"min radius of curvature, contour", at(p->analysis.min_convex_contour_radius)});
     std::string undercut = "none";
     if (!p->analysis.undercut.empty()) {

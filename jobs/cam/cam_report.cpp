@@ -144,6 +144,10 @@ void add_analysis_fields(json& j, const CamDesignStage& d, const CamAnalysisStag
     j["min_radius_of_curvature_at_deg"] = a.min_convex_contour_radius.theta * kDegreesPerRadian;
     j["min_concave_radius_of_curvature_mm"] = finite_or_null(a.min_concave_contour_radius.value);
     j["min_pitch_radius_of_curvature_mm"] = finite_or_null(a.min_convex_pitch_radius.value);
+    j["pipe_bound"] = nullptr;
+    if (const auto& b = p->pipe_bound)
+      j["pipe_bound"] = {{"kappa_max_per_mm", finite_or_null(b->kappa_max)},
+                         {"r_local_mm", b->r_local}};
     j["undercut"] = !a.undercut.empty();
     j["undercut_ranges_deg"] = json::array();
     for (const AngleRange& u : a.undercut)

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "jobs/fit/surface_fairing_stage.h"
 #include "src/error.h"
 #include "src/io/point_cloud.h"
 #include "src/number_text.h"
@@ -192,14 +193,14 @@ FitJobResult fit_cloud(FitInput in, const FitJobOptions& o) {
         "--interrogate: a profile has no surface to interrogate (its curvature is in "
         "curvature.svg); this cloud is " +
         plane_text(plane));
-  if (o.fairing && !polar)
-    throw InputError("--fair: fairing is implemented for profiles (polar fits); this cloud is " +
-                     plane_text(plane) + ", fitted as a surface");
   const RotationalFitOptions rotational = polar ? RotationalFitOptions{} : rotational_options(o);
   std::variant<ProfileFit, RotationalFit> fit = naming_input(in.file.string(), [&] {
     return polar ? std::variant<ProfileFit, RotationalFit>(fit_profile(in, plane, o))
                  : std::variant<ProfileFit, RotationalFit>(fit_rotational(in.points, rotational));
   });
+  std::optional<SurfaceFitFairing> surface_fairing;
+  if (auto* r = std::get_if<RotationalFit>(&fit); r && o.fairing)
+    surface_fairing = fair_surface_fit(*r, in.points, *o.fairing);
   std::string method, reason;
   if (const auto* p = std::get_if<ProfileFit>(&fit)) {
     method = "polar";
@@ -232,7 +233,8 @@ FitJobResult fit_cloud(FitInput in, const FitJobOptions& o) {
                       o.reject_outliers,
                       std::move(warnings),
                       in.read_seconds + clock.lap(),
-                      std::nullopt};
+                      std::nullopt,
+                      std::move(surface_fairing)};
   if (o.interrogate) {
     const RotationalFit& f = std::get<RotationalFit>(result.fit);
     std::vector<NurbsSurface> surfaces{f.surface()};

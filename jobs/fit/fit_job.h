@@ -21,6 +21,7 @@
 #include "src/fit/polar_curve_fit.h"
 #include "src/fit/profile_fairing.h"
 #include "src/fit/rotational_fit.h"
+#include "src/fit/surface_fairing.h"
 
 namespace polarform {
 
@@ -43,7 +44,8 @@ struct FitJobOptions {
   ArcKind base = ArcKind::rqb;    // the base circles' arcs
   RevolutionMode revolution =
       RevolutionMode::automatic;  // F constant around the axis: test / force
-  // Profiles: fair F after the fit (MIT §8.2.3); the curve's move and new error are measured.
+  // Fair F after the fit (MIT §8.2.3–8.2.4), a profile's or a surface's (rows and columns of its
+  // net); the geometry's move and new error are measured.
   std::optional<ProfileFairingOptions> fairing;
   // Surfaces: curvature maps and reflection lines (MIT §8.2.4) of the fitted surface and caps.
   std::optional<CurvatureQuantity> interrogate;
@@ -95,6 +97,7 @@ struct FitJobResult {
   std::vector<std::string> warnings;  // about the fit: a pole that creases or is extrapolated
   double seconds = 0.0;  // read + fit
   std::optional<SurfaceInterrogation> interrogation;  // surfaces, when asked
+  std::optional<SurfaceFitFairing> surface_fairing;   // surfaces, when asked
 
   bool profile() const { return std::holds_alternative<ProfileFit>(fit); }
   const FitReport& report() const;

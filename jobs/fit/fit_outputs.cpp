@@ -16,6 +16,7 @@
 #include "jobs/fit/fit_plots.h"
 #include "jobs/fit/profile_curvature_figure.h"
 #include "jobs/fit/profile_interrogation.h"
+#include "jobs/fit/surface_fairing_stage.h"
 #include "jobs/report/exchange_headers.h"
 #include "jobs/report/output_files.h"
 #include "polarform_version.h"
@@ -307,6 +308,7 @@ json fit_report_fields(const FitJobResult& r) {
   }
   j["warnings"] = r.warnings;
   if (r.interrogation) j["interrogation"] = surface_interrogation_json(*r.interrogation);
+  if (r.surface_fairing) j["fairing"] = surface_fairing_json(*r.surface_fairing);
   if (const auto* profile = std::get_if<ProfileFit>(&r.fit)) {
     j["interrogation"] = interrogation_json(profile->interrogation);
     if (profile->fairing) j["fairing"] = fairing_json(*profile->fairing);
@@ -371,6 +373,8 @@ std::map<std::string, std::string> render_fit_outputs(const FitJobResult& r) {
                                  profile->before_fairing ? &*profile->before_fairing : nullptr));
     content["curvature.csv"] = interrogation_csv(profile->interrogation);
   }
+  if (r.surface_fairing)
+    content["fairing.svg"] = svg_document(surface_fairing_figure(*r.surface_fairing));
   if (r.interrogation)
     for (const auto& [name, text] :
          interrogation_x3d(*r.interrogation, r.input.filename().string()))

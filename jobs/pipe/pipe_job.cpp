@@ -8,6 +8,7 @@
 #include "src/io/spine_csv.h"
 #include "src/number_text.h"
 #include "src/nurbs/curve_interpolation.h"
+#include "src/nurbs/spine_table.h"
 
 namespace polarform {
 
@@ -39,16 +40,63 @@ NurbsCurve3d spine_through(const Eigen::Matrix3Xd& p, bool closed) {
   return NurbsCurve3d(s.degree(), s.knots(), ctrl);
 }
 
-PipeJobResult run_pipe_job(const std::filesystem::path& file, const PipeJobOptions& o) {
+namespace {
+
+double diameter(const Eigen::Matrix3Xd& points) {
+  return (points.rowwise().maxCoeff() - points.rowwise().minCoeff()).norm();
+}
+
+// Everything after the spine: curvature, bounds (an infeasible radius refused or, allowed,
+// warned about), the pipe surface; `size` scales the default tolerance.
+void bound_and_skin(PipeJobResult& r, const PipeJobOptions& o, double size,
+                    std::chrono::steady_clock::time_point t0) {
+  r.length = SpineTable(r.spine, 64).length();
+  r.curvature = max_curvature(r.spine);
+  r.bounds = pipe_bounds(r.spine, r.closed);
+  r.nonsingular = o.radius < r.bounds.delta;
+  if (!r.nonsingular) {
+    const auto at = [&](double t) {
+      return r.chord_length_parameter ? number_text(t) + " mm along the spine"
+                                      : "t = " + number_text(t) + " on the spine";
+    };
+    const std::string where = r.bounds.t1 == r.bounds.t2
+                                  ? "at " + at(r.bounds.t1)
+                                  : "between " + at(r.bounds.t1) + " and " + at(r.bounds.t2);
+    const std::string what =
+        "--radius " + number_text(o.radius) +
+        " mm: the pipe self-intersects for radii at or beyond δ = " + number_text(r.bounds.delta) +
+        " mm (" + r.bounds.limiting_mode + ", " + where + ")";
+    if (!o.allow_self_intersection)
+      throw InputError(r.input.string() + ": " + what +
+                       "; use a smaller radius or --allow-self-intersection");
+    r.warnings.push_back(what);
+  }
+  r.tolerance = o.tolerance > 0 ? o.tolerance : 1e-4 * size;
+  // A self-intersecting pipe folds into cusps no skinning follows to a tolerance: it is skinned
+  // once (a station per knot span) and its measured deviation reported.
+  r.pipe = pipe_surface(r.spine, o.radius, o.frame,
+                        r.nonsingular ? r.tolerance : std::numeric_limits<double>::max());
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// The result's input and options, after checking the radius.
+PipeJobResult started(const std::filesystem::path& input, const PipeJobOptions& o) {
   if (!(o.radius > 0) || !std::isfinite(o.radius))
     throw InputError("--radius: expected a positive length in mm");
-  const auto t0 = std::chrono::steady_clock::now();
   PipeJobResult r;
-  r.input = file;
+  r.input = input;
   r.radius = o.radius;
   r.frame = o.frame;
+  return r;
+}
+
+}  // namespace
+
+PipeJobResult run_pipe_job(const std::filesystem::path& file, const PipeJobOptions& o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  PipeJobResult r = started(file, o);
   r.points = read_spine_csv(file);
-  const double size = (r.points.rowwise().maxCoeff() - r.points.rowwise().minCoeff()).norm();
+  const double size = diameter(r.points);
   const bool ends_meet =
       (r.points.col(0) - r.points.col(r.points.cols() - 1)).norm() <= 1e-9 * size;
   r.closed =
@@ -61,29 +109,26 @@ PipeJobResult run_pipe_job(const std::filesystem::path& file, const PipeJobOptio
   if (r.closed && pts.cols() < 4)
     throw InputError(file.string() + ": a closed spine needs at least 3 distinct points");
   r.spine = spine_through(pts, r.closed);
-  r.curvature = max_curvature(r.spine);
-  r.bounds = pipe_bounds(r.spine, r.closed);
-  r.nonsingular = o.radius < r.bounds.delta;
-  if (!r.nonsingular) {
-    const std::string where = r.bounds.t1 == r.bounds.t2
-                                  ? "at " + number_text(r.bounds.t1) + " mm along the spine"
-                                  : "between " + number_text(r.bounds.t1) + " and " +
-                                        number_text(r.bounds.t2) + " mm along the spine";
-    const std::string what =
-        "--radius " + number_text(o.radius) +
-        " mm: the pipe self-intersects for radii at or beyond δ = " + number_text(r.bounds.delta) +
-        " mm (" + r.bounds.limiting_mode + ", " + where + ")";
-    if (!o.allow_self_intersection)
-      throw InputError(file.string() + ": " + what +
-                       "; use a smaller radius or --allow-self-intersection");
-    r.warnings.push_back(what);
-  }
-  r.tolerance = o.tolerance > 0 ? o.tolerance : 1e-4 * size;
-  // A self-intersecting pipe folds into cusps no skinning follows to a tolerance: it is skinned
-  // once (a station per knot span) and its measured deviation reported.
-  r.pipe = pipe_surface(r.spine, o.radius, o.frame,
-                        r.nonsingular ? r.tolerance : std::numeric_limits<double>::max());
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  bound_and_skin(r, o, size, t0);
+  return r;
+}
+
+PipeJobResult run_pipe_job(const std::filesystem::path& input, const NurbsCurve3d& spine,
+                           const PipeJobOptions& o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  PipeJobResult r = started(input, o);
+  r.spine = spine;
+  r.chord_length_parameter = false;
+  r.points.resize(3, spine.size());
+  for (int i = 0; i < spine.size(); ++i) r.points.col(i) = spine.control_point(i);
+  const double size = diameter(r.points);
+  const double gap = (spine.point(spine.front()) - spine.point(spine.back())).norm();
+  const bool ends_meet = gap <= 1e-9 * size;
+  if (o.closure == SpineClosure::closed && !ends_meet)
+    throw InputError(input.string() + ": a closed spine (closed yes) but its ends are " +
+                     number_text(gap) + " mm apart");
+  r.closed = o.closure != SpineClosure::open && ends_meet;
+  bound_and_skin(r, o, size, t0);
   return r;
 }
 

@@ -44,7 +44,8 @@ Figure pipe_curvature_figure(const PipeJobResult& r) {
   f.title = "curvature of the spine: κ_max = " + format_trimmed(r.curvature.kappa_max, 5) +
             " 1/mm (1/κ_max = " + format_trimmed(1 / r.curvature.kappa_max, 5) + " mm)";
   Plot& p = f.add_panel();
-  p.x_label = "length along the spine (chord-length parameter) [mm]";
+  p.x_label = r.chord_length_parameter ? "length along the spine (chord-length parameter) [mm]"
+                                       : "spine parameter t";
   p.y_label = "curvature κ [1/mm]";
   Series k{"κ", {}, {}, Series::Style::line, "#14c"};
   const std::vector<double> ts =
@@ -81,10 +82,11 @@ json pipe_report_json(const PipeJobResult& r, const std::vector<std::string>& fi
   j["spine"] = {{"closed", r.closed},
                 {"degree", r.spine.degree()},
                 {"control_points", r.spine.size()},
-                {"length_mm", r.spine.back() - r.spine.front()},
+                {"length_mm", r.length},
                 {"kappa_max_per_mm", r.curvature.kappa_max},
                 {"at_t", r.curvature.t_at},
-                {"parameter", "chord length of the spine points [mm]"}};
+                {"parameter", r.chord_length_parameter ? "chord length of the spine points [mm]"
+                                                       : "the NURBS spine's own"}};
   const PipeBounds& b = r.bounds;
   j["bounds_mm"] = {{"local", bound(b.local)},
                     {"end_end", bound(b.end_end)},

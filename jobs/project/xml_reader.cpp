@@ -64,6 +64,18 @@ std::optional<double> parse_number(const char* s) {
   return value;
 }
 
+// "1,2.5,3" as numbers; nullopt when an item is not a finite number.
+std::optional<std::vector<double>> split_numbers(const char* text) {
+  std::vector<double> out;
+  std::stringstream list(text);
+  for (std::string item; std::getline(list, item, ',');) {
+    const auto x = parse_number(item.c_str());
+    if (!x) return std::nullopt;
+    out.push_back(*x);
+  }
+  return out;
+}
+
 // "a, b, c".
 std::string joined(const std::set<std::string>& names) {
   std::string out;
@@ -166,18 +178,20 @@ std::string XmlElementReader::text(const char* name, const char* fallback) const
   return v ? v : fallback;
 }
 
+std::vector<double> XmlElementReader::number_list(const char* name) const {
+  const char* v = raw(name);
+  if (!v) fail(name, "comma-separated numbers (attribute is missing)");
+  const auto out = split_numbers(v);
+  if (!out || out->empty()) fail(name, "comma-separated numbers");
+  return *out;
+}
+
 std::vector<double> XmlElementReader::numbers(const char* name, std::size_t count) const {
   const char* v = raw(name);
   if (!v) fail(name, std::to_string(count) + " comma-separated numbers (attribute is missing)");
-  std::vector<double> out;
-  std::stringstream list(v);
-  for (std::string item; std::getline(list, item, ',');) {
-    const auto x = parse_number(item.c_str());
-    if (!x) fail(name, std::to_string(count) + " comma-separated numbers");
-    out.push_back(*x);
-  }
-  if (out.size() != count) fail(name, std::to_string(count) + " comma-separated numbers");
-  return out;
+  const auto out = split_numbers(v);
+  if (!out || out->size() != count) fail(name, std::to_string(count) + " comma-separated numbers");
+  return *out;
 }
 
 std::vector<const tinyxml2::XMLElement*> XmlElementReader::children(const char* name) const {

@@ -64,6 +64,8 @@ class XmlElementReader {
   std::string text(const char* name, const char* fallback) const;
   // A comma-separated list of numbers ("3,3").
   std::vector<double> numbers(const char* name, std::size_t count) const;
+  // A comma-separated list of numbers of any length ("0,0,0,0.5,1,1,1"), at least one.
+  std::vector<double> number_list(const char* name) const;
 
   // Child elements by name, in document order (each marked as read, the name as known).
   std::vector<const tinyxml2::XMLElement*> children(const char* name) const;

@@ -70,6 +70,13 @@ ScanCamJobResult run_scan_cam_job(const std::filesystem::path& scan, const ScanC
   r.dropped = cloud.dropped;
   r.read_seconds = clock.lap();
   r.scan = naming_input(scan.string(), [&] { return analyse_scanned_cam(cloud.points, so); });
+  if (o.fairing) {
+    ScanCamFairing f{{}, r.scan.displacement.height, {}, {}};
+    if (r.nominal)
+      f.acceleration_rms_before = compare_to_nominal(r.scan, *r.nominal).svaj_stats[2].rms;
+    f.fairing = fair_scanned_displacement(r.scan, *o.fairing);
+    r.fairing = std::move(f);
+  }
   r.interrogation = interrogate_profile(r.scan.fit);
   r.resolution = resolve_motion(r.scan);
   try {
@@ -80,6 +87,7 @@ ScanCamJobResult run_scan_cam_job(const std::filesystem::path& scan, const ScanC
   if (r.nominal) {
     r.comparison =
         naming_input(scan.string(), [&] { return compare_to_nominal(r.scan, *r.nominal); });
+    if (r.fairing) r.fairing->acceleration_rms_after = r.comparison->svaj_stats[2].rms;
     r.tolerance = o.tolerance;
     if (o.tolerance) r.within_tolerance = r.comparison->normal_stats.max <= *o.tolerance;
     if (const auto w = wrong_nominal_warning(r, o)) r.warnings.push_back(*w);

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "designers/scan/design_recovery.h"
+#include "designers/scan/displacement_fairing.h"
 #include "designers/scan/motion_resolution.h"
 #include "designers/scan/nominal_comparison.h"
 #include "designers/scan/scanned_cam.h"
@@ -31,6 +32,16 @@ struct ScanCamJobOptions {
   bool skip_bad = false;
   int threads = 2;
   ProgressFn read_progress;
+  // Fair the recovered displacement s(θ) before anything uses it (displacement_fairing.h).
+  std::optional<ProfileFairingOptions> fairing;
+};
+
+// What --fair did to s(θ), and (with a nominal) the rms error of the recovered acceleration
+// against the nominal's before and after it, mm/rad².
+struct ScanCamFairing {
+  DisplacementFairing fairing;
+  BSplineFunction before;  // y0 + s(θ) as fitted
+  std::optional<double> acceleration_rms_before, acceleration_rms_after;
 };
 
 struct ScanCamJobResult {
@@ -51,6 +62,7 @@ struct ScanCamJobResult {
   std::optional<RecoveredDesign> design;
   std::string design_failure;
   MotionResolution resolution;  // up to which derivative the scan resolves the motion
+  std::optional<ScanCamFairing> fairing;
   double read_seconds = 0.0, seconds = 0.0;
 };
 

@@ -192,6 +192,10 @@ std::string html_report(const ScanCamJobResult& r, const json& report,
   html.add_heading("Recovered motion");
   html.add_svg(svgs.at("svaj.svg"),
                "Recovered s, v, a, j against cam angle (per radian of cam angle).");
+  if (r.fairing)
+    html.add_svg(svgs.at("fairing.svg"),
+                 "The recovered acceleration before and after fairing s(θ), and the jumps of "
+                 "its p-th derivative at the knots faired.");
   if (r.comparison) {
     html.add_svg(svgs.at("svaj_difference.svg"), "Recovered minus nominal s, v, a, j.");
     std::vector<std::vector<std::string>> rows;
@@ -275,6 +279,27 @@ json scan_cam_report_json(const ScanCamJobResult& r, const std::vector<std::stri
   j["design"] = design_json(r);
   if (!project.empty()) j["design"]["project_file"] = project.string();
   j["interrogation"] = interrogation_json(r.interrogation);
+  if (const auto& f = r.fairing) {
+    json knots = json::array();
+    for (const FairingStep& k : f->fairing.steps)
+      knots.push_back({{"u_deg", k.u * kDegreesPerRadian},
+                       {"jump_before", k.jump_before},
+                       {"jump_after", k.jump_after},
+                       {"bound_mm", k.bound}});
+    j["fairing"] = {{"method", fairing_method_name(f->fairing.method)},
+                    {"tolerance_mm", f->fairing.tolerance},
+                    {"passes", f->fairing.steps.size()},
+                    {"knots_faired", knots},
+                    {"max_jump_before", f->fairing.max_jump_before},
+                    {"max_jump_after", f->fairing.max_jump_after},
+                    {"measured_deviation_mm", f->fairing.measured_deviation},
+                    {"acceleration_rms_error_before", nullptr},
+                    {"acceleration_rms_error_after", nullptr}};
+    if (f->acceleration_rms_before) {
+      j["fairing"]["acceleration_rms_error_before"] = *f->acceleration_rms_before;
+      j["fairing"]["acceleration_rms_error_after"] = *f->acceleration_rms_after;
+    }
+  }
   j["warnings"] = r.warnings;
   j["files"] = files;
   j["seconds"] = {{"read", r.read_seconds}, {"total", r.seconds}};
@@ -314,6 +339,7 @@ std::vector<std::string> write_scan_cam_outputs(const ScanCamJobResult& r,
       {"profile.svg", svg_document(scan_profile_figure(r))},
       {"curvature.svg", svg_document(profile_curvature_figure(
                             r.interrogation, "polar angle ψ of the contour, cam frame [deg]"))}};
+  if (r.fairing) svgs["fairing.svg"] = svg_document(scan_fairing_figure(r));
   if (r.comparison) {
     svgs["svaj_difference.svg"] = svg_document(scan_svaj_difference_figure(r));
     content["deviation.csv"] = deviation_csv(*r.comparison);

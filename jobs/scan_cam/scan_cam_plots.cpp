@@ -114,6 +114,49 @@ Figure scan_svaj_figure(const ScanCamJobResult& r) {
   return fig;
 }
 
+Figure scan_fairing_figure(const ScanCamJobResult& r) {
+  const ScanCamFairing& f = *r.fairing;
+  Figure fig(800, 700);
+  fig.title = "Fairing of s(θ) (" + fairing_method_name(f.fairing.method) + ", " +
+              std::to_string(f.fairing.steps.size()) + " knots, moved " +
+              number_text(f.fairing.measured_deviation) + " mm)";
+  const std::vector<double> theta = grid(1440);
+  Plot& a = fig.add_panel();
+  a.y_label = kNames[2];
+  cam_angle_axis(a);
+  Series before{"before fairing", degrees(theta), {}, Series::Style::line, "#aaaaaa"};
+  Series after{"faired", degrees(theta), {}, Series::Style::line, ""};
+  for (double t : theta) {
+    before.y.push_back(f.before.spline().derivatives(t, 2)(0, 2));
+    after.y.push_back(r.scan.displacement.height.spline().derivatives(t, 2)(0, 2));
+  }
+  a.add(std::move(before));
+  a.add(std::move(after));
+  if (r.nominal) {
+    Series nominal{"nominal", degrees(theta), {}, Series::Style::dashed, ""};
+    for (double t : theta) {
+      double d[3];
+      r.nominal->program().derivatives(t, 2, d);
+      nominal.y.push_back(d[2]);
+    }
+    a.add(std::move(nominal));
+  }
+  Plot& jumps = fig.add_panel();
+  jumps.y_label = "jump of s's p-th derivative at the knots faired";
+  cam_angle_axis(jumps);
+  Series jb{"before", {}, {}, Series::Style::markers, "#aaaaaa"},
+      ja{"after", {}, {}, Series::Style::markers, ""};
+  for (const FairingStep& k : f.fairing.steps) {
+    jb.x.push_back(k.u * kDegreesPerRadian);
+    jb.y.push_back(k.jump_before);
+    ja.x.push_back(k.u * kDegreesPerRadian);
+    ja.y.push_back(k.jump_after);
+  }
+  jumps.add(std::move(jb));
+  jumps.add(std::move(ja));
+  return fig;
+}
+
 Figure scan_svaj_difference_figure(const ScanCamJobResult& r) {
   const NominalComparison& c = *r.comparison;
   Figure fig(800, 1000);

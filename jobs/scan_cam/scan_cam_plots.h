@@ -13,6 +13,9 @@ Figure scan_svaj_figure(const ScanCamJobResult& r);
 Figure scan_svaj_difference_figure(const ScanCamJobResult& r);  // needs a nominal
 Figure scan_deviation_figure(const ScanCamJobResult& r);
 Figure scan_profile_figure(const ScanCamJobResult& r);
+// --fair: the recovered acceleration before (grey) and after fairing s(θ), the nominal's dashed,
+// and the p-th derivative jumps at the knots faired before and after.
+Figure scan_fairing_figure(const ScanCamJobResult& r);  // needs r.fairing
 
 // The recovered s, s', s'', s''' (mm/rad^k) on `count` uniform cam angles over a revolution.
 std::array<std::vector<double>, 4> recovered_svaj(const ScannedCam& scan,

@@ -52,6 +52,12 @@ std::vector<SplineKnotJump> top_derivative_jumps(const BSpline& c) {
   return out;
 }
 
+double max_top_derivative_jump(const BSpline& c) {
+  double m = 0.0;
+  for (const SplineKnotJump& j : top_derivative_jumps(c)) m = std::max(m, j.jump);
+  return m;
+}
+
 CurveFairing farin_fair(const BSpline& c, const FairingOptions& o, int point_dim) {
   check(o, "farin_fair");
   CurveFairing r{c, {}, 0.0};
@@ -117,6 +123,30 @@ KjellanderFairing kjellander_fair(const Eigen::MatrixXd& values, const Eigen::Ve
     r.max_data_move = std::max(r.max_data_move, from_original);
   }
   return r;
+}
+
+// MIT 13.472J §8.2.3 (8.15)–(8.18) on the spline's own breakpoint values.
+CurveFairing kjellander_fair_spline(const BSpline& F, const FairingOptions& o) {
+  if (F.degree() != 3)
+    throw InputError("--fair kjellander: F has degree " + std::to_string(F.degree()) +
+                     "; Kjellander's fairing interpolates cubics (use --fair farin, or degree 3)");
+  std::vector<double> t;
+  for (const Breakpoint& b : breakpoints(F.knots())) {
+    if (b.value > F.front() && b.value < F.back() && b.multiplicity != 1)
+      throw InputError("--fair kjellander: F has a multiple knot at u = " +
+                       std::to_string(b.value) + "; use --fair farin");
+    t.push_back(b.value);
+  }
+  if (t.size() < 5) return {F, {}, 0.0};  // too few breakpoints to move one
+  const Eigen::VectorXd params =
+      Eigen::Map<const Eigen::VectorXd>(t.data(), static_cast<Eigen::Index>(t.size()));
+  Eigen::MatrixXd values(F.dim(), params.size());
+  for (Eigen::Index k = 0; k < params.size(); ++k) values.col(k) = F.point(params[k]);
+  CubicEnds ends;
+  ends.start_tangent = F.derivatives(F.front(), 1).col(1);
+  ends.end_tangent = F.derivatives(F.back(), 1).col(1);
+  KjellanderFairing k = kjellander_fair(values, params, o, ends);
+  return {std::move(k.spline), std::move(k.steps), k.max_data_move};
 }
 
 SurfaceFairing farin_fair_surface_u(const BSplineSurface& s, const FairingOptions& o) {

@@ -24,6 +24,8 @@ struct SplineKnotJump {
 // The jump of the p-th derivative at every distinct interior knot, in order (exact: the p-th
 // derivative is piecewise constant; NURBS Book A3.3 applied p times).
 std::vector<SplineKnotJump> top_derivative_jumps(const BSpline& c);
+// The largest of them (0 without interior knots).
+double max_top_derivative_jump(const BSpline& c);
 
 struct FairingStep {
   double u;  // the knot faired (Kjellander: the data parameter)
@@ -70,6 +72,12 @@ struct KjellanderFairing {
 // `ends` gives the interpolant's end tangents (natural ends where absent).
 KjellanderFairing kjellander_fair(const Eigen::MatrixXd& values, const Eigen::VectorXd& parameters,
                                   const FairingOptions& options, const CubicEnds& ends = {});
+
+// Kjellander on a cubic B-spline (any dimension): its values at its distinct breakpoints are the
+// data, its end tangents kept (so a closed curve stays C1 at its seam); total_bound is the largest
+// data move. Fewer than 5 breakpoints leave it as it is. Throws InputError for a degree other
+// than 3 or a multiple interior knot.
+CurveFairing kjellander_fair_spline(const BSpline& c, const FairingOptions& options);
 
 struct SurfaceFairing {
   BSplineSurface surface;

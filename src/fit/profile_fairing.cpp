@@ -11,69 +11,40 @@
 
 namespace polarform {
 
-namespace {
-
-double max_jump(const BSpline& F) {
-  double m = 0.0;
-  for (const SplineKnotJump& j : top_derivative_jumps(F)) m = std::max(m, j.jump);
-  return m;
-}
-
-// Kjellander on F's values at its distinct breakpoints, the end tangents kept.
-BSpline kjellander_on_function(const BSpline& F, const FairingOptions& o,
-                               std::vector<FairingStep>& steps) {
-  if (F.degree() != 3)
-    throw InputError("--fair kjellander: F has degree " + std::to_string(F.degree()) +
-                     "; Kjellander's fairing interpolates cubics (use --fair farin, or degree 3)");
-  std::vector<double> t;
-  for (const Breakpoint& b : breakpoints(F.knots())) {
-    if (b.value > F.front() && b.value < F.back() && b.multiplicity != 1)
-      throw InputError("--fair kjellander: F has a multiple knot at u = " +
-                       std::to_string(b.value) + "; use --fair farin");
-    t.push_back(b.value);
-  }
-  const Eigen::VectorXd params =
-      Eigen::Map<const Eigen::VectorXd>(t.data(), static_cast<Eigen::Index>(t.size()));
-  Eigen::MatrixXd values(F.dim(), params.size());
-  for (Eigen::Index k = 0; k < params.size(); ++k) values.col(k) = F.point(params[k]);
-  CubicEnds ends;
-  ends.start_tangent = F.derivatives(F.front(), 1).col(1);
-  ends.end_tangent = F.derivatives(F.back(), 1).col(1);
-  if (params.size() < 5) return F;  // too few breakpoints to move one
-  KjellanderFairing k = kjellander_fair(values, params, o, ends);
-  steps = std::move(k.steps);
-  return k.spline;
-}
-
-}  // namespace
-
 std::string fairing_method_name(FairingMethod method) {
   return method == FairingMethod::farin ? "farin" : "kjellander";
+}
+
+double fairing_tolerance(const ProfileFairingOptions& options, double rms) {
+  const double t = options.tolerance > 0 ? options.tolerance : 3.0 * rms;
+  if (!(t > 0))
+    throw InputError(
+        "fairing: the fit has no residual to estimate a tolerance from; give --fair-tol");
+  return t;
 }
 
 ProfileFairing fair_polar_curve(PolarCurveFit& fit, const Eigen::Matrix2Xd& points,
                                 const ProfileFairingOptions& options) {
   ProfileFairing r;
   r.method = options.method;
-  r.tolerance = options.tolerance > 0 ? options.tolerance : 3.0 * fit.report.error.rms;
-  if (!(r.tolerance > 0))
-    throw InputError(
-        "fairing: the fit has no residual to estimate a tolerance from; give --fair-tol");
+  r.tolerance = fairing_tolerance(options, fit.report.error.rms);
   FairingOptions o;
   o.tolerance = r.tolerance;
   o.max_passes = options.max_passes;
   const BSpline& F0 = fit.F.spline();
   o.fixed_end_points = fit.closed ? F0.degree() : 0;
-  r.max_jump_before = max_jump(F0);
+  r.max_jump_before = max_top_derivative_jump(F0);
   BSpline F1 = F0;
   if (options.method == FairingMethod::farin) {
     CurveFairing f = farin_fair(F0, o);
     F1 = std::move(f.spline);
     r.steps = std::move(f.steps);
   } else {
-    F1 = kjellander_on_function(F0, o, r.steps);
+    CurveFairing k = kjellander_fair_spline(F0, o);
+    F1 = std::move(k.spline);
+    r.steps = std::move(k.steps);
   }
-  r.max_jump_after = max_jump(F1);
+  r.max_jump_after = max_top_derivative_jump(F1);
   const NurbsCurve2d before = fit.curve;
   fit.F = BSplineFunction(F1);
   fit.curve = polar_product_curve(fit.F, fit.base, fit.centre);

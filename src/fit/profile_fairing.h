@@ -24,6 +24,9 @@ struct ProfileFairingOptions {
   int max_passes = 100;
 };
 
+// options.tolerance, or 3 × the fit's rms error when it is <= 0; InputError when both are 0.
+double fairing_tolerance(const ProfileFairingOptions& options, double rms);
+
 struct ProfileFairing {
   FairingMethod method = FairingMethod::farin;
   double tolerance = 0.0;              // as used (mm)

@@ -11,6 +11,7 @@
 #include "jobs/fit/fit_outputs.h"
 #include "src/error.h"
 #include "ui/cli/commands.h"
+#include "ui/cli/fairing_arguments.h"
 #include "ui/cli/fit_arguments.h"
 #include "ui/cli/interrogate_option.h"
 #include "ui/cli/progress_bar.h"
@@ -81,22 +82,7 @@ FitJobOptions job_options(const FitArgs& a, FitJobOptions o) {
   if (!a.revolution.empty())
     o.revolution = static_cast<RevolutionMode>(
         parse_choice("--revolution", a.revolution, {"auto", "yes", "no"}));
-  if (!a.fair.empty()) {
-    ProfileFairingOptions f;
-    f.method = parse_choice("--fair", a.fair, {"kjellander", "farin"}) == 0
-                   ? FairingMethod::kjellander
-                   : FairingMethod::farin;
-    o.fairing = f;
-  }
-  if ((!a.fair_tol.empty() || !a.fair_passes.empty()) && !o.fairing)
-    throw InputError("--fair-tol and --fair-passes need --fair kjellander|farin");
-  if (!a.fair_tol.empty()) {
-    o.fairing->tolerance = parse_numbers("--fair-tol", a.fair_tol, 1, 1)[0];
-    if (!(o.fairing->tolerance > 0))
-      throw InputError("--fair-tol '" + a.fair_tol + "': expected a positive number of mm");
-  }
-  if (!a.fair_passes.empty())
-    o.fairing->max_passes = parse_int_pair("--fair-passes", a.fair_passes, 1, 100000).first;
+  o.fairing = fairing_options(a.fair, a.fair_tol, a.fair_passes);
   if (const auto q = interrogate_option(a.interrogate)) o.interrogate = q;
   o.threads = parse_int_pair("--threads", a.threads, 1, 256).first;
   o.skip_bad = o.skip_bad || a.skip_bad;
@@ -204,9 +190,10 @@ void add_fit_command(CLI::App& app) {
                   "sphere-like form or circle (default auto: when an F-test of F(u) against "
                   "F(u, v) finds no variation beyond the noise at the 0.1 % level)");
   add_interrogate_option(*cmd, args->interrogate);
-  cmd->add_option("--fair", args->fair,
-                  "kjellander|farin: fair a profile's F after the fit (MIT §8.2.3); curvature.svg "
-                  "shows before and after");
+  cmd->add_option(
+      "--fair", args->fair,
+      "kjellander|farin: fair F after the fit (MIT §8.2.3-8.2.4): a profile's (curvature.svg "
+      "shows before and after) or a surface's rows and columns");
   cmd->add_option("--fair-tol", args->fair_tol,
                   "how far fairing may move the curve [mm] (default 3 × the fit's rms error)");
   cmd->add_option("--fair-passes", args->fair_passes,

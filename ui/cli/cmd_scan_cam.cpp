@@ -13,6 +13,7 @@
 #include "src/number_text.h"
 #include "src/units.h"
 #include "ui/cli/commands.h"
+#include "ui/cli/fairing_arguments.h"
 #include "ui/cli/fit_arguments.h"
 #include "ui/cli/progress_bar.h"
 
@@ -22,7 +23,8 @@ namespace {
 
 struct ScanCamArgs {
   std::string scan, out, center, bore, axis = "auto", nominal, tol, follower, roller_radius, offset,
-                                       rotation, threads = "2", write_project;
+                                       rotation, threads = "2", write_project, fair, fair_tol,
+                                       fair_passes;
   bool skip_bad = false, quiet = false, lenient = false;
 };
 
@@ -63,6 +65,7 @@ ScanCamJobOptions job_options(const ScanCamArgs& a) {
                      : Rotation::Clockwise;
   o.threads = parse_int_pair("--threads", a.threads, 1, 256).first;
   o.skip_bad = a.skip_bad;
+  o.fairing = fairing_options(a.fair, a.fair_tol, a.fair_passes);
   return o;
 }
 
@@ -196,6 +199,14 @@ void add_scan_cam_command(CLI::App& app) {
                   "DESIGN.xml: write the design recovered from the scan (segments, laws, base "
                   "radius, follower) as a cam project; `polarform cam DESIGN.xml` reproduces the "
                   "profile to the deviation report.json states (design.redesign_deviation)");
+  cmd->add_option("--fair", args->fair,
+                  "farin|kjellander: fair the recovered displacement s(θ) before the motion is "
+                  "compared and recovered (MIT §8.2.3); fairing.svg shows the acceleration before "
+                  "and after (Kjellander needs a cubic s and is refused on the quintic)");
+  cmd->add_option("--fair-tol", args->fair_tol,
+                  "how far fairing may move s [mm] (default 3 × the displacement fit's noise)");
+  cmd->add_option("--fair-passes", args->fair_passes,
+                  "at most this many knots faired (default 100)");
   cmd->add_option("--threads", args->threads, "worker threads (default 2)");
   cmd->add_flag("--skip-bad", args->skip_bad,
                 "skip unparsable or non-finite records instead of stopping");

@@ -53,13 +53,5 @@ TEST(ProfileFairing, BothMethodsSmoothWithinTheTolerance) {
   }
 }
 
-TEST(ProfileFairing, SurfacesAreRefusedByName) {
-  FitJobOptions o;
-  o.fairing = ProfileFairingOptions{};
-  Eigen::Matrix3Xd p = noisy_profile(0.0);
-  for (Eigen::Index k = 0; k < p.cols(); ++k) p(2, k) = (k % 10) * 1.0;
-  EXPECT_THROW(run_fit_job(p, "tube", o), InputError);
-}
-
 }  // namespace
 }  // namespace polarform

@@ -1,6 +1,7 @@
 // The pipe job end to end: a U-shaped spine whose bound δ = d comes from its half circle and its
 // legs' double normal; a radius below it gives the bundle, one at it is refused by name unless
-// allowed; a straight spine gives an exact cylinder; the spine reader refuses bad files by line.
+// allowed; a straight spine gives an exact cylinder; a <pipe> project's rational circle spine gives
+// the exact torus with 1/κ_max = R; the spine reader refuses bad files by line.
 #include "jobs/pipe/pipe_job.h"
 
 #include <gtest/gtest.h>
@@ -11,6 +12,7 @@
 #include <numbers>
 
 #include "jobs/pipe/pipe_outputs.h"
+#include "jobs/project/pipe_project.h"
 #include "src/error.h"
 #include "src/io/spine_csv.h"
 
@@ -106,6 +108,70 @@ TEST(PipeJob, AStraightSpineGivesAnExactCylinder) {
       const Eigen::Vector3d axis = Eigen::Vector3d(1, 2, 3).normalized();
       EXPECT_NEAR((p - p.dot(axis) * axis).norm(), 0.5, 1e-12);
     }
+}
+
+// The full circle of radius R as the rational quadratic of NURBS Book Ex. 7.2 in a <pipe> project.
+std::string circle_pipe_xml(double R, const std::string& closed) {
+  std::string xml = "<pipe radius=\"5\" degree=\"2\" closed=\"" + closed +
+                    "\" knots=\"0,0,0,0.25,0.25,0.5,0.5,0.75,0.75,1,1,1\">\n";
+  const double x[9] = {1, 1, 0, -1, -1, -1, 0, 1, 1}, y[9] = {0, 1, 1, 1, 0, -1, -1, -1, 0};
+  for (int i = 0; i < 9; ++i)
+    xml += "  <point at=\"" + std::to_string(R * x[i]) + "," + std::to_string(R * y[i]) + ",0\"" +
+           (i % 2 ? " weight=\"0.70710678118654757\"" : "") + "/>\n";
+  return xml + "</pipe>\n";
+}
+
+TEST(PipeJob, ARationalCircleSpineFromXmlGivesTheExactTorus) {
+  constexpr double R = 30.0, r = 5.0;
+  std::vector<std::string> warnings;
+  const PipeProject project = parse_pipe_project(circle_pipe_xml(R, "auto"), "torus.xml", warnings);
+  EXPECT_TRUE(warnings.empty());
+  const PipeJobOptions o = pipe_job_options(project);
+  EXPECT_EQ(o.radius, r);
+  const PipeJobResult res = run_pipe_job("torus.xml", pipe_spine(project), o);
+  EXPECT_TRUE(res.closed);
+  EXPECT_FALSE(res.chord_length_parameter);
+  EXPECT_EQ(res.points.cols(), 9);
+  EXPECT_NEAR(1 / res.curvature.kappa_max, R, 1e-12 * R);
+  EXPECT_NEAR(res.bounds.local, R, 1e-12 * R);
+  EXPECT_NEAR(res.length, 2 * std::numbers::pi * R, 1e-9 * R);
+  EXPECT_TRUE(res.nonsingular);
+  ASSERT_TRUE(res.pipe.exact);
+  const NurbsSurface& s = res.pipe.surface;
+  EXPECT_EQ(s.degree_u(), 2);
+  EXPECT_EQ(s.degree_v(), 2);
+  double worst = 0.0;  // |(ρ − R)² + z² − r²| / r²: on the torus (closed form)
+  for (int a = 0; a <= 40; ++a)
+    for (int b = 0; b <= 40; ++b) {
+      const Eigen::Vector3d p = s.point(s.front_u() + (s.back_u() - s.front_u()) * a / 40,
+                                        s.front_v() + (s.back_v() - s.front_v()) * b / 40);
+      const double rho = std::hypot(p.x(), p.y());
+      worst = std::max(worst, std::abs((rho - R) * (rho - R) + p.z() * p.z() - r * r) / (r * r));
+    }
+  EXPECT_LT(worst, 1e-12);
+}
+
+TEST(PipeJob, ANurbsSpineClosedOnRequestMustMeetItself) {
+  std::vector<std::string> warnings;
+  PipeProject p = parse_pipe_project(circle_pipe_xml(30.0, "yes"), "c.xml", warnings);
+  p.points.back() = Eigen::Vector3d(30, 0.5, 0);
+  try {
+    run_pipe_job("c.xml", pipe_spine(p), pipe_job_options(p));
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "c.xml: a closed spine (closed yes) but its ends are 0.5 mm apart");
+  }
+  p.closure = SpineClosure::automatic;  // open: its ends are apart, so its end circles meet
+  PipeJobOptions o = pipe_job_options(p);
+  o.allow_self_intersection = true;
+  const PipeJobResult r = run_pipe_job("c.xml", pipe_spine(p), o);
+  EXPECT_FALSE(r.closed);
+  EXPECT_FALSE(r.nonsingular);
+  EXPECT_EQ(r.bounds.limiting_mode, "end-body");
+  ASSERT_EQ(r.warnings.size(), 1u);
+  EXPECT_NE(r.warnings[0].find("(end-body, between t = 0 on the spine and t = "), std::string::npos)
+      << r.warnings[0];
 }
 
 TEST(SpineCsv, RefusalsNameTheLine) {

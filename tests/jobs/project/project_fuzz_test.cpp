@@ -1,6 +1,7 @@
 // Bounded mutation fuzzing (tests/support/bounded_mutator.h) of the project readers: the cam,
-// vessel and fit project files, seeded with the bundled examples and, for fit projects, with
-// every attribute at once. Every mutant parses or throws InputError.
+// vessel, fit and pipe project files, seeded with the bundled examples and, for fit projects, with
+// every attribute at once (pipe projects: the fuzz corpus's torus). Every mutant parses or throws
+// InputError.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -11,6 +12,7 @@
 
 #include "jobs/project/cam_project.h"
 #include "jobs/project/fit_project.h"
+#include "jobs/project/pipe_project.h"
 #include "jobs/project/vessel_project.h"
 #include "tests/support/src/bounded_mutator.h"
 
@@ -67,6 +69,16 @@ TEST(ParserFuzz, FitProjectReaderAcceptsOrRejectsCleanly) {
        "center=\"1,2,3\" axis=\"0,0,1\" skip-bad=\"true\" fairness=\"fixed\" lambda=\"1e-4\" "
        "base=\"quartic\"/></polarform>",
        parse, 301, iterations());
+}
+
+TEST(ParserFuzz, PipeProjectReaderAcceptsOrRejectsCleanly) {
+  fuzz(
+      read_text("tests/fuzz/corpus/pipe_project/valid-circle-spine.xml"),
+      [](const std::string& text) {
+        std::vector<std::string> warnings;
+        parse_pipe_project(text, "fuzz.xml", warnings);
+      },
+      400, iterations());
 }
 
 }  // namespace
