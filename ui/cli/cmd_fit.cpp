@@ -172,10 +172,10 @@ void add_fit_command(CLI::App& app) {
                   "max|p99|p95|rms: the statistic --tol bounds (default max)");
   cmd->add_option("--center", args->center,
                   "X,Y[,Z]: origin of the fit's frame in mm (profiles: the polar centre); alone, "
-                  "a cylindrical fit refines the axis through it");
+                  "a surface fit refines the axis through it");
   cmd->add_option("--axis", args->axis,
                   "X,Y,Z: axis k of the fit's frame (profiles: the plane normal); alone, a "
-                  "cylindrical fit finds its line by least squares");
+                  "surface fit finds its line (cylindrical) or centre (spherical)");
   cmd->add_option("--fairness", args->fairness,
                   "fixed|relative|gcv: how the fairing weight λ is chosen (default relative: "
                   "--lambda times the data's scale; fixed: λ = --lambda; gcv: generalised "
