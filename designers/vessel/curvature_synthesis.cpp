@@ -107,7 +107,8 @@ SynthesisResult synthesize_profile(const SynthesisProblem& problem) {
   const double L = problem.length_unit;
   const SynthesisSettings& settings = problem.settings;
   const SynthesisSpace space = synthesis_space(settings);
-  const EndConstraints ends = end_constraints(space, problem.end_a, problem.end_b, L);
+  const EndConstraints ends =
+      end_constraints(space, problem.end_a, problem.end_b, L, problem.depth);
   const int m = space.unknowns();
 
   const SynthesisObjective f(space, problem.targets, L, settings.smoothing);
@@ -175,8 +176,7 @@ SynthesisResult synthesize_profile(const SynthesisProblem& problem) {
     out.targets.push_back({t.theta, t.kappa, polar_curvature(d(0), d(1), d(2)), t.weight});
   }
   for (const EndConstraint& c : ends.imposed) {
-    const double theta = c.end == 'A' ? 0.0 : kPi;
-    const double achieved = out.profile.derivatives(theta, c.order)(c.order);
+    const double achieved = out.profile.derivatives(c.theta(), c.order)(c.order);
     out.conditions.push_back({c.name(), c.value, achieved});
     out.max_violation = std::max(out.max_violation, std::abs(achieved - c.value));
   }

@@ -51,6 +51,7 @@ struct SynthesisProblem {
   std::vector<CurvatureTarget> targets;
   EndCondition end_a;  // at θ = 0
   EndCondition end_b;  // at θ = π
+  std::optional<double> depth;  // R(π/2), mm: the head's depth above the junction plane
   SynthesisSettings settings;
 };
 

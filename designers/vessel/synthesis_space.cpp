@@ -55,11 +55,16 @@ SynthesisSpace synthesis_space(const SynthesisSettings& s) {
 }
 
 std::string EndConstraint::name() const {
-  return "R" + std::string(order, '\'') + (end == 'A' ? "(0)" : "(π)");
+  return "R" + std::string(order, '\'') + (end == 'A' ? "(0)" : end == 'B' ? "(π)" : "(π/2)");
+}
+
+double EndConstraint::theta() const {
+  return end == 'A' ? 0.0 : end == 'B' ? std::numbers::pi : std::numbers::pi / 2;
 }
 
 EndConstraints end_constraints(const SynthesisSpace& space, const EndCondition& end_a,
-                               const EndCondition& end_b, double length_unit) {
+                               const EndCondition& end_b, double length_unit,
+                               std::optional<double> depth) {
   const int p = space.degree, n = space.ordinates();
   EndConstraints out;
   for (const char end : {'A', 'B'}) {
@@ -77,6 +82,15 @@ EndConstraints end_constraints(const SynthesisSpace& space, const EndCondition& 
       on_ordinates.segment(span - p, p + 1) = ders.row(order);
       out.imposed.push_back({end, order, *given[order], on_ordinates * space.map});
     }
+  }
+  if (depth) {
+    if (!(std::isfinite(*depth) && *depth > 0.0))
+      throw InputError("synthesis: depth R(π/2) " + value_text(*depth) + " mm, expected > 0");
+    const double theta = std::numbers::pi / 2;
+    const int span = find_span(p, space.knots, n, theta);
+    Eigen::RowVectorXd on_ordinates = Eigen::RowVectorXd::Zero(n);
+    on_ordinates.segment(span - p, p + 1) = ders_basis_funs(span, theta, p, 0, space.knots).row(0);
+    out.imposed.push_back({'M', 0, *depth, on_ordinates * space.map});
   }
 
   // Accept each condition whose row is independent of the accepted ones; a dependent one must

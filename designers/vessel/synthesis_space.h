@@ -6,6 +6,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,13 +27,14 @@ struct SynthesisSpace {
 // smoothing >= 0 and max_iterations >= 1.
 SynthesisSpace synthesis_space(const SynthesisSettings& settings);
 
-// One imposed condition: R^(order) at θ = 0 (end A) or π (end B).
+// One imposed condition: R^(order) at θ = 0 (end A) or π (end B), or the depth R(π/2) (M).
 struct EndConstraint {
-  char end = 'A';
+  char end = 'A';       // 'A', 'B' or 'M'
   int order = 0;        // 0: R, 1: R', 2: R''
   double value = 0.0;   // mm, mm/rad, mm/rad²
   Eigen::RowVectorXd row;  // the condition as row · unknowns = value
   std::string name() const;  // e.g. "R''(π)"
+  double theta() const;      // rad
 };
 
 struct EndConstraints {
@@ -42,10 +44,12 @@ struct EndConstraints {
   int free_parameters = 0;  // unknowns − rank
 };
 
+// The end conditions, then the depth R(π/2) = depth when given (a head of prescribed depth).
 // Throws InputError if a condition contradicts the ones before it in the space (naming both
 // values), or if the independent conditions leave no free parameter. length_unit (mm) scales the
 // tolerance of the consistency check.
 EndConstraints end_constraints(const SynthesisSpace& space, const EndCondition& end_a,
-                               const EndCondition& end_b, double length_unit);
+                               const EndCondition& end_b, double length_unit,
+                               std::optional<double> depth = std::nullopt);
 
 }  // namespace polarform

@@ -151,6 +151,7 @@ VesselSolution solve_curvature_design(const VesselDesign& design, const VesselLo
   problem.end_a = design.end_a.value_or(EndCondition::thesis_default(design.radius));
   problem.end_b = design.end_b.value_or(EndCondition::thesis_default(design.radius));
   problem.settings = design.synthesis;
+  problem.depth = design.depth;
   problem.targets = design.targets;
   if (problem.targets.empty())
     problem.targets =

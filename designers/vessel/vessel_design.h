@@ -47,6 +47,7 @@ struct VesselDesign {
   HeadDesign head_design = HeadDesign::curvature;
   // minimum_stress: the head's depth, mm (absent: the preset's depth), and its meridian's
   // curvature at the junctions, 1/mm (absent: free; 0: curvature-continuous with the cylinder).
+  // curvature: the depth, when given, is imposed as R(π/2) = depth.
   std::optional<double> depth;
   std::optional<double> junction_kappa;
   std::optional<CodeInputs> code;  // check the wall by ASME VIII-1 (vessel_code_check.h)

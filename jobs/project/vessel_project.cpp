@@ -74,7 +74,8 @@ EndCondition read_end(const XmlElementReader& r, double radius) {
 // `curvature_inputs`: the vessel has <curvature>, <end> or <synthesis> elements, which ask for a
 // curvature design unless design="exact" or "minimum-stress" says otherwise; `has_curvatures`: it
 // has <curvature> elements, which an exact or minimum-stress head refuses. Sets d.head_design,
-// d.preset (absent only for a minimum-stress head), d.depth, d.junction_kappa, d.preset_targets.
+// d.preset (absent for a minimum-stress head or a curvature head of a given depth), d.depth,
+// d.junction_kappa, d.preset_targets.
 void read_head(const XmlElementReader& r, VesselDesign& d, bool curvature_inputs,
                bool has_curvatures) {
   const bool synthesised = curvature_inputs || r.has("targets");
@@ -95,10 +96,20 @@ void read_head(const XmlElementReader& r, VesselDesign& d, bool curvature_inputs
       if (!d.depth) r.fail("depth", "the head's depth (or a preset to take it from)");
       return;
     }
+  } else if (d.head_design == HeadDesign::curvature) {
+    // A curvature design of a prescribed depth, R(π/2) = depth; its targets may come without a
+    // preset.
+    if (r.has("junction-kappa"))
+      r.fail("junction-kappa", "no junction-kappa unless design=\"minimum-stress\"");
+    if (r.has("depth")) d.depth = r.positive("depth");
+    if (d.depth && !(*d.depth <= 4 * d.radius))
+      r.fail("depth", "a head depth up to 4 × the vessel radius " + number(4 * d.radius) + " mm");
+    if (!r.has("preset") && d.depth) return;
   } else {
     for (const char* name : {"depth", "junction-kappa"})
       if (r.has(name))
-        r.fail(name, std::string("no ") + name + " unless design=\"minimum-stress\"");
+        r.fail(name,
+               std::string("no ") + name + " unless design=\"minimum-stress\" or \"curvature\"");
   }
   HeadPreset h;
   const std::string preset =
@@ -335,7 +346,7 @@ std::string vessel_project_xml(const VesselProject& p) {
     if ((*end)->ddr) attribute(out, "ddr", *(*end)->ddr);
     out << "/>\n";
   }
-  if (d.preset || d.head_design == HeadDesign::minimum_stress) {
+  if (d.preset || d.depth || d.head_design == HeadDesign::minimum_stress) {
     out << "    <head";
     if (d.preset) attribute(out, "preset", std::string(head_kind_name(d.preset->kind)));
     attribute(out, "design", std::string(head_design_name(d.head_design)));

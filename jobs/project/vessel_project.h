@@ -44,8 +44,10 @@ VesselDesign to_design(const VesselProject& project);
 //     <curvature theta="deg" kappa="1/mm" | radius="mm" weight="1"/>…
 //     <end at="A|B" r="mm" dr="mm/rad" ddr="mm/rad²"/>   (present attributes are imposed)
 //     <head preset="hemispherical|ellipsoidal|torispherical" ratio="2" crown="mm" knuckle="mm"
-//           design="exact|curvature" targets="48"/>   (design: exact unless the vessel has
-//           <curvature>, <end> or <synthesis> elements or the head a targets attribute)
+//           design="exact|curvature|minimum-stress" targets="48" depth="mm"/>   (design: exact
+//           unless the vessel has <curvature>, <end> or <synthesis> elements or the head a
+//           targets attribute; depth: of a minimum-stress head, or imposed on a curvature head as
+//           R(π/2) = depth, its preset then optional)
 //     <synthesis degree="5" ordinates="20" smoothing="1e-6" symmetric="false"
 //                max-iterations="500"/>
 //   </vessel>

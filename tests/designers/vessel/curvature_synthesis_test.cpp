@@ -56,6 +56,26 @@ TEST(CurvatureSynthesis, CircleWithCircleEndConditionsIsTheCircle) {
   EXPECT_EQ(r.free_parameters, 14);
 }
 
+// A prescribed depth R(π/2) is one more linear equality: the hemisphere's targets on a 500 mm
+// vessel with its default ends, held to a depth of 450 mm, reach it to 1e-8 of the radius and
+// report it with the end conditions; a depth of 0 is refused by name.
+TEST(CurvatureSynthesis, PrescribedDepthIsImposed) {
+  SynthesisProblem problem;
+  problem.length_unit = 500;
+  problem.targets = circle_targets(500, 50);
+  problem.end_a = problem.end_b = EndCondition::thesis_default(500);
+  problem.depth = 450;
+  const SynthesisResult r = synthesize_profile(problem);
+  EXPECT_NEAR(r.profile(kPi / 2), 450.0, 1e-8 * 500);
+  ASSERT_EQ(r.conditions.size(), 7u);
+  EXPECT_EQ(r.conditions.back().name, "R(π/2)");
+  EXPECT_LT(std::abs(r.conditions.back().violation()), 1e-8 * 500);
+  EXPECT_EQ(r.free_parameters, 13);
+  problem.depth = 0.0;
+  EXPECT_THAT(error_of([&] { synthesize_profile(problem); }),
+              HasSubstr("synthesis: depth R(π/2) 0 mm, expected > 0"));
+}
+
 // Only R' = R'' = 0 at the ends: the start circle (R = length unit 500) is wrong and the solver
 // must find the radius 400 from the curvature alone (κ(0) = 1/R(0) when R' = R'' = 0).
 TEST(CurvatureSynthesis, CircleRadiusFoundFromCurvature) {

@@ -93,6 +93,30 @@ TEST(VesselProject, SaveLoadRoundTripIsExact) {
   fs::remove_all(dir);
 }
 
+// A curvature head of a prescribed depth: from its targets without a preset, or from a preset's;
+// saved and loaded exactly; the depth is refused on an exact head.
+TEST(VesselProject, CurvatureHeadOfAGivenDepth) {
+  std::vector<std::string> warnings;
+  const VesselProject p =
+      parse_vessel_project(vessel(kVessel,
+                                  "<curvature theta=\"45\" radius=\"450\"/>\n"
+                                  "<head design=\"curvature\" depth=\"420\"/>\n"),
+                           "t.xml", warnings);
+  EXPECT_EQ(p.design.head_design, HeadDesign::curvature);
+  EXPECT_EQ(p.design.depth, 420.0);
+  EXPECT_FALSE(p.design.preset);
+  EXPECT_EQ(parse_vessel_project(vessel_project_xml(p), "mem.xml", warnings), p);
+  const VesselProject q = parse_vessel_project(
+      vessel(kVessel, "<head preset=\"ellipsoidal\" design=\"curvature\" depth=\"200\"/>\n"),
+      "t.xml", warnings);
+  EXPECT_EQ(q.design.depth, 200.0);
+  EXPECT_EQ(parse_vessel_project(vessel_project_xml(q), "mem.xml", warnings), q);
+  EXPECT_TRUE(warnings.empty());
+  EXPECT_EQ(error_of(vessel(kVessel, "<head preset=\"ellipsoidal\" depth=\"200\"/>\n")),
+            "t.xml:3: <head> attribute 'depth': expected no depth unless "
+            "design=\"minimum-stress\" or \"curvature\", got '200'");
+}
+
 TEST(VesselProject, ToDesignConvertsUnits) {
   const VesselDesign d = to_design(odd_project());
   ASSERT_EQ(d.targets.size(), 4u);
