@@ -167,7 +167,8 @@ SectionRecovery recover_sections(const Eigen::Matrix3Xd& points, const SectionOp
           const Eigen::Vector3d p = spine.point(probe[k], c.centroid.x(), c.centroid.y());
           moved = std::max(moved, (p - spine.frame(probe[k]).point).norm());
           centres.push_back(p);
-        } catch (const InputError&) {
+        } catch (const InputError&) {  // not closed or not star-shaped (yet): no centroid
+        } catch (const NumericalError&) {
         }
       }
       out.timings_s.sections += seconds_since(t0);
