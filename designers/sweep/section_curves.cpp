@@ -24,7 +24,7 @@ constexpr int kSizes[] = {4, 8, 12, 16, 24, 32, 48, 64};
 
 struct RadialFit {
   SectionCurve curve;
-  ErrorStats residual;  // F(u_k) − r_k
+  ErrorStats residual;  // of F + a·G − r over the slab's points
 };
 
 RadialFit radial_fit(const SectionSlab& slab, const BaseCircle& base, int size,

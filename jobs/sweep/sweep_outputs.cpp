@@ -149,7 +149,8 @@ json sections_json(const SectionRecovery& x) {
           {"adaptive_rounds", x.rounds},
           {"radius_function_spans", x.spans},
           {"section_error_kind",
-           "true distance of a slab's points, in the station frame, to its section curve"},
+           "radial residual of a slab's points to its section r = F + a·G (a the offset along "
+           "the spine, F the section)"},
           {"stations", stations}};
 }
 
