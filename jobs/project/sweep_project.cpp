@@ -15,7 +15,8 @@ namespace {
 
 using tinyxml2::XMLElement;
 
-constexpr const char* kKinds[] = {"auto", "revolution", "extrusion"};  // in SweepKind's order
+constexpr const char* kKinds[] = {"auto", "revolution", "extrusion",
+                                  "sections"};  // in SweepKind's order
 
 Eigen::Vector3d direction(const XmlElementReader& r, const char* name) {
   const std::vector<double> v = r.numbers(name, 3);
@@ -30,8 +31,9 @@ void read_sweep(const XMLElement* e, const std::string& file, std::vector<Unknow
   const std::string scan = r.text("scan", "");
   if (scan.empty()) r.fail("scan", "the scan or mesh file (path relative to the project file)");
   p.scan = scan;
-  const std::string kind = r.choice("kind", {"auto", "revolution", "extrusion"}, "auto");
-  for (int k = 0; k < 3; ++k)
+  const std::string kind =
+      r.choice("kind", {"auto", "revolution", "extrusion", "sections"}, "auto");
+  for (int k = 0; k < 4; ++k)
     if (kind == kKinds[k]) p.kind = static_cast<SweepKind>(k);
   if (r.has("axis")) p.axis = direction(r, "axis");
   if (r.has("center")) {

@@ -38,7 +38,7 @@ std::filesystem::path scan_path(const SweepProject& project,
 SweepJobOptions sweep_job_options(const SweepProject& project);
 
 // Reads <polarform version="1"><sweep …/></polarform>, or a bare <sweep> root:
-//   <sweep scan="part.stl" kind="auto|revolution|extrusion" axis="x,y,z" center="x,y,z"
+//   <sweep scan="part.stl" kind="auto|revolution|extrusion|sections" axis="x,y,z" center="x,y,z"
 //          tolerance="mm" degree="3" corner-angle="30" skip-bad="false"/>
 // Throws InputError "file:line: <sweep> attribute 'x': expected …" for bad values, and for
 // unknown attributes or elements, which UnknownNames::warn turns into warnings.

@@ -32,6 +32,16 @@ ExtrusionRecovery extrusion_of(const Eigen::Matrix3Xd& points, const SweepJobOpt
   return recover_extrusion(points, ext);
 }
 
+SectionRecovery sections_of(const Eigen::Matrix3Xd& points, const SweepJobOptions& o) {
+  SectionOptions sec;
+  sec.tolerance = o.tolerance;
+  sec.degree = o.degree;
+  sec.spine = o.spine;
+  if (o.sections > 0) sec.initial_sections = sec.max_sections = o.sections;
+  sec.threads = o.threads;
+  return recover_sections(points, sec);
+}
+
 std::string figures(const SweptFit& f) {
   return "max " + number_text(f.error.max) + " mm, rms " + number_text(f.error.rms) + " mm";
 }
@@ -48,6 +58,7 @@ bool extrusion_wins(const SweptFit& rev, const SweptFit& ext) {
 }  // namespace
 
 const SweptFit& SweepJobResult::fit() const {
+  if (is_sections) return *sections;
   if (is_extrusion) return *extrusion;
   return *revolution;
 }
@@ -57,6 +68,14 @@ SweepJobResult run_sweep_job(const std::filesystem::path& scan, const SweepJobOp
   if (o.center && o.kind == SweepKind::extrusion)
     throw InputError("--center: an extrusion has no axis point (--axis gives its direction)");
   if (o.axis && !(o.axis->norm() > 0.0)) throw InputError("--axis: the direction is zero");
+  if (o.axis && o.kind == SweepKind::sections)
+    throw InputError(
+        "--axis: the kind sections starts from the PCA axis and bends its spine "
+        "through the section centres; give no --axis");
+  if (o.sections != 0 && o.kind != SweepKind::sections)
+    throw InputError("--sections: only with --kind sections");
+  if (o.sections < 0 || o.sections == 1)
+    throw InputError("--sections " + std::to_string(o.sections) + ": expected at least 2");
   const auto t0 = std::chrono::steady_clock::now();
   SweepJobResult r;
   r.input = scan;
@@ -70,6 +89,12 @@ SweepJobResult run_sweep_job(const std::filesystem::path& scan, const SweepJobOp
     if (o.kind == SweepKind::revolution) {
       r.revolution = revolution_of(r.points, o);
       r.reason = "revolution as asked";
+    } else if (o.kind == SweepKind::sections) {
+      r.sections = sections_of(r.points, o);
+      r.is_sections = true;
+      r.reason = std::string("sections as asked: ") + std::to_string(r.sections->stations.size()) +
+                 " stations along a " + (r.sections->spine_curved ? "curved" : "straight") +
+                 " spine" + (o.sections > 0 ? " (the count given)" : " (adaptive slicing)");
     } else if (o.kind == SweepKind::extrusion) {
       r.extrusion = extrusion_of(r.points, o);
       r.is_extrusion = true;

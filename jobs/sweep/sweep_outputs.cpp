@@ -46,14 +46,19 @@ std::string html_report(const SweepJobResult& r, const std::string& profile,
   HtmlReport html("polarform sweep report: " + r.input.filename().string());
   std::vector<std::pair<std::string, std::string>> key = {
       {"kind", r.kind()}, {"points", std::to_string(r.points.cols())}};
-  if (r.is_extrusion) {
+  if (r.is_sections) {
+    key.push_back({"sections", std::to_string(r.sections->stations.size())});
+    key.push_back({"spine", std::string(r.sections->spine_curved ? "curved" : "straight") + ", " +
+                                format_trimmed(r.sections->spine_length, 9) + " mm"});
+  } else if (r.is_extrusion) {
     key.push_back({"extrusion direction", triple(r.extrusion->direction)});
     key.push_back({"extrusion length [mm]", format_trimmed(r.extrusion->length(), 9)});
   } else {
     key.push_back({"axis direction", triple(r.revolution->axis.direction)});
   }
-  key.push_back(
-      {r.is_extrusion ? "section loops" : "profile loops", std::to_string(v.profile.loops.size())});
+  if (!r.is_sections)
+    key.push_back({r.is_extrusion ? "section loops" : "profile loops",
+                   std::to_string(v.profile.loops.size())});
   key.push_back({"error rms / p95 / max [mm]", format_trimmed(v.error.rms, 6) + " / " +
                                                    format_trimmed(v.error.p95, 6) + " / " +
                                                    format_trimmed(v.error.max, 6)});
@@ -61,12 +66,16 @@ std::string html_report(const SweepJobResult& r, const std::string& profile,
                  format_trimmed(v.tolerance, 6) + (r.tolerance_met() ? " (met)" : " (NOT met)")});
   html.add_key_figures(key);
   html.add_paragraph(r.reason + ".");
-  html.add_svg(profile, r.is_extrusion
-                            ? "The section: every point projected along the extrusion direction, "
-                              "the points fitted, corners and the curve."
-                            : "The meridian profile: every point projected to (z, r), the points "
-                              "fitted, corners and the curve.");
-  html.add_svg(preview, r.is_extrusion
+  html.add_svg(profile,
+               r.is_sections    ? "The sections in their station frames: the points of every slab "
+                                  "and the fitted curves."
+               : r.is_extrusion ? "The section: every point projected along the extrusion "
+                                  "direction, the points fitted, corners and the curve."
+                                : "The meridian profile: every point projected to (z, r), the "
+                                  "points fitted, corners and the curve.");
+  html.add_svg(preview, r.is_sections ? "Signed distance of every point from the skin against "
+                                        "its arc length along the spine."
+                        : r.is_extrusion
                             ? "Signed distance of every point from the extruded surface against "
                               "its angle about the section's centroid."
                             : "Signed distance of every point from the recovered surface against "
@@ -120,6 +129,57 @@ json extrusion_json(const ExtrusionRecovery& x) {
              "direction for length mm"}}}};
 }
 
+json sections_json(const SectionRecovery& x) {
+  json stations = json::array();
+  for (const SectionStation& s : x.stations)
+    stations.push_back({{"s_mm", s.s},
+                        {"centre", vec(s.centre)},
+                        {"points", s.points},
+                        {"mean_radius_mm", s.curve.mean_radius},
+                        {"rms_mm", s.curve.error.rms},
+                        {"max_mm", s.curve.error.max}});
+  return {{"count", x.stations.size()},
+          {"spine",
+           {{"kind", x.spine_curved ? "curved" : "straight"},
+            {"length_mm", x.spine_length},
+            {"iterations", x.spine_iterations},
+            {"start", vec(x.spine->frame(x.stations.front().s).point)},
+            {"end", vec(x.spine->frame(x.stations.back().s).point)}}},
+          {"slab_half_width_mm", x.slab},
+          {"adaptive_rounds", x.rounds},
+          {"radius_function_spans", x.spans},
+          {"section_error_kind",
+           "radial residual of a slab's points to its section r = F + a·G (a the offset along "
+           "the spine, F the section)"},
+          {"stations", stations}};
+}
+
+// The meridian profile or the extrusion's section loops.
+json profile_json(const SweepJobResult& r) {
+  const SweptFit& v = r.fit();
+  json loops = json::array();
+  for (const MeridianLoop& l : v.profile.loops) {
+    json corners = json::array();
+    for (const Eigen::Vector2d& c : l.corners) corners.push_back(json::array({c.x(), c.y()}));
+    json ctrl = json::array();
+    for (const Eigen::Vector2d& c : l.curve.control_points())
+      ctrl.push_back(json::array({c.x(), c.y()}));
+    loops.push_back({{"closed", l.closed},
+                     {"points_fitted", l.points.cols()},
+                     {"corners", corners},
+                     {"ends_on_axis", json::array({l.start_on_axis, l.end_on_axis})},
+                     {"degree", l.curve.degree()},
+                     {"knots", l.curve.knots()},
+                     {"control_points", ctrl},
+                     {"fit_max_mm", l.fit_max}});
+  }
+  return {{"source", v.profile.rings ? "ring clusters" : "MLS-thinned scan"},
+          {"plane", r.is_extrusion ? "section: x along extrusion.section_plane.x_axis, y along "
+                                     "its y_axis, from its origin [mm]"
+                                   : "z along the axis from axis.point, r from the axis [mm]"},
+          {"loops", loops}};
+}
+
 // An extrusion of exactly one closed section loop bounds a solid.
 bool has_solid(const SweepJobResult& r) {
   return r.is_extrusion && r.extrusion->profile.loops.size() == 1 &&
@@ -153,47 +213,34 @@ json sweep_report_json(const SweepJobResult& r, const std::vector<std::string>& 
   }
   if (r.revolution && !r.is_extrusion) j["axis"] = revolution_json(*r.revolution);
   if (r.is_extrusion) j["extrusion"] = extrusion_json(*r.extrusion);
+  if (r.is_sections) j["sections"] = sections_json(*r.sections);
   if (r.revolution && r.extrusion) {
     const SweptFit& other = r.is_extrusion ? static_cast<const SweptFit&>(*r.revolution)
                                            : static_cast<const SweptFit&>(*r.extrusion);
     j["alternative"] = {{"kind", r.is_extrusion ? "revolution" : "extrusion"},
                         {"error_mm", error_json(other.error)}};
   }
-  json loops = json::array();
-  for (const MeridianLoop& l : v.profile.loops) {
-    json corners = json::array();
-    for (const Eigen::Vector2d& c : l.corners) corners.push_back(json::array({c.x(), c.y()}));
-    json ctrl = json::array();
-    for (const Eigen::Vector2d& c : l.curve.control_points())
-      ctrl.push_back(json::array({c.x(), c.y()}));
-    loops.push_back({{"closed", l.closed},
-                     {"points_fitted", l.points.cols()},
-                     {"corners", corners},
-                     {"ends_on_axis", json::array({l.start_on_axis, l.end_on_axis})},
-                     {"degree", l.curve.degree()},
-                     {"knots", l.curve.knots()},
-                     {"control_points", ctrl},
-                     {"fit_max_mm", l.fit_max}});
-  }
-  j["profile"] = {
-      {"source", v.profile.rings ? "ring clusters" : "MLS-thinned scan"},
-      {"plane", r.is_extrusion ? "section: x along extrusion.section_plane.x_axis, y along its "
-                                 "y_axis, from its origin [mm]"
-                               : "z along the axis from axis.point, r from the axis [mm]"},
-      {"loops", loops}};
+  if (!r.is_sections) j["profile"] = profile_json(r);
   json degrees = json::array();
   for (const NurbsSurface& s : v.surfaces)
     degrees.push_back(json::array({s.degree_u(), s.degree_v()}));
   j["surface"] = {
       {"count", v.surfaces.size()},
       {"degrees", degrees},
-      {"kind", r.is_extrusion ? "section extruded along the direction (degree (p, 1))"
-                              : "profile × rational quadratic circle (NURBS Book A8.1)"}};
+      {"kind", r.is_sections    ? "sections skinned along the spine (NURBS Book §10.3; u the "
+                                  "section angle from the station frame's x, v the arc length)"
+               : r.is_extrusion ? "section extruded along the direction (degree (p, 1))"
+                                : "profile × rational quadratic circle (NURBS Book A8.1)"}};
   j["error_mm"] = error_json(v.error);
   j["tolerance_mm"] = v.tolerance;
   j["tolerance_met"] = r.tolerance_met();
   j["unexplained_points"] = v.unexplained;
-  if (r.is_extrusion) {
+  if (r.is_sections) {
+    const SectionRecovery::Timings& t = r.sections->timings_s;
+    j["timings_s"] = {{"read", r.read_seconds},  {"frame", t.frame}, {"slicing", t.slicing},
+                      {"sections", t.sections},  {"skin", t.skin},   {"error", t.error},
+                      {"total", r.total_seconds}};
+  } else if (r.is_extrusion) {
     const ExtrusionRecovery::Timings& t = r.extrusion->timings_s;
     j["timings_s"] = {{"read", r.read_seconds},  {"frame", t.frame},     {"direction", t.direction},
                       {"profile", t.profile},    {"surface", t.surface}, {"error", t.error},
@@ -219,25 +266,39 @@ std::vector<std::string> write_sweep_outputs(const SweepJobResult& r,
   StepWriter stp(r.input.stem().string()), profile_stp(r.input.stem().string() + " profile");
   X3dWriter x3d;
   DxfWriter dxf;
-  const std::string surface_name = r.is_extrusion ? "EXTRUSION " : "REVOLUTION ";
+  const std::string surface_name = r.is_sections    ? "SKIN "
+                                   : r.is_extrusion ? "EXTRUSION "
+                                                    : "REVOLUTION ";
   for (std::size_t l = 0; l < v.surfaces.size(); ++l) {
     const std::string name = surface_name + std::to_string(l + 1);
     igs.add(v.surfaces[l], name);
-    stp.add(v.surfaces[l], (r.is_extrusion ? "extruded surface " : "surface of revolution ") +
+    stp.add(v.surfaces[l], (r.is_sections    ? "skinned surface "
+                            : r.is_extrusion ? "extruded surface "
+                                             : "surface of revolution ") +
                                std::to_string(l + 1));
     x3d.add(v.surfaces[l], name);
+    if (r.is_sections) continue;
     profile_igs.add(v.profile.loops[l].curve, "PROFILE " + std::to_string(l + 1));
     profile_stp.add(v.profile.loops[l].curve, "profile " + std::to_string(l + 1));
     dxf.add(v.profile.loops[l].curve, "PROFILE");
   }
   iges.file_name = "surface.igs";
   content["surface.igs"] = igs.str(iges);
-  iges.file_name = "profile.igs";
-  content["profile.igs"] = profile_igs.str(iges);
   step.file_name = "surface.stp";
   content["surface.stp"] = stp.str(step);
-  step.file_name = "profile.stp";
-  content["profile.stp"] = profile_stp.str(step);
+  if (r.is_sections) {
+    IgesWriter sections_igs;
+    for (std::size_t k = 0; k < r.sections->stations.size(); ++k)
+      sections_igs.add(r.sections->stations[k].placed, "SECTION " + std::to_string(k + 1));
+    iges.file_name = "sections.igs";
+    content["sections.igs"] = sections_igs.str(iges);
+  } else {
+    iges.file_name = "profile.igs";
+    content["profile.igs"] = profile_igs.str(iges);
+    step.file_name = "profile.stp";
+    content["profile.stp"] = profile_stp.str(step);
+    content["profile.dxf"] = dxf.str();
+  }
   if (has_solid(r)) {
     const ExtrusionRecovery& x = *r.extrusion;
     Eigen::Isometry3d placement = Eigen::Isometry3d::Identity();
@@ -250,10 +311,9 @@ std::vector<std::string> write_sweep_outputs(const SweepJobResult& r,
                                                r.input.stem().string(), step, placement);
   }
   content["surface.x3d"] = x3d.str(title);
-  content["profile.dxf"] = dxf.str();
   const std::string profile_svg = svg_document(sweep_profile_figure(r));
   const std::string preview_svg = svg_document(sweep_preview_figure(r));
-  content["profile.svg"] = profile_svg;
+  content[r.is_sections ? "sections.svg" : "profile.svg"] = profile_svg;
   content["preview.svg"] = preview_svg;
   std::vector<std::string> files;
   for (const auto& [file, text] : content) files.push_back(file);

@@ -16,10 +16,17 @@ Eigen::Index figure_stride(Eigen::Index n) { return std::max<Eigen::Index>(1, n 
 Figure sweep_profile_figure(const SweepJobResult& r) {
   const SweptFit& v = r.fit();
   Figure f(900, 600);
-  f.title = (r.is_extrusion ? "section of " : "meridian profile of ") + r.input.filename().string();
+  f.title = (r.is_sections    ? "sections of "
+             : r.is_extrusion ? "section of "
+                              : "meridian profile of ") +
+            r.input.filename().string();
   Plot& p = f.add_panel();
-  p.x_label = r.is_extrusion ? "x in the section plane [mm]" : "z along the axis [mm]";
-  p.y_label = r.is_extrusion ? "y in the section plane [mm]" : "r from the axis [mm]";
+  p.x_label = r.is_sections    ? "x in the station frame [mm]"
+              : r.is_extrusion ? "x in the section plane [mm]"
+                               : "z along the axis [mm]";
+  p.y_label = r.is_sections    ? "y in the station frame [mm]"
+              : r.is_extrusion ? "y in the section plane [mm]"
+                               : "r from the axis [mm]";
   p.equal_aspect = true;
   Series pts{"projected points", {}, {}, Series::Style::markers, "#9ab"};
   for (Eigen::Index k = 0; k < v.plane.cols(); k += figure_stride(v.plane.cols())) {
@@ -30,7 +37,10 @@ Figure sweep_profile_figure(const SweepJobResult& r) {
   for (std::size_t l = 0; l < v.profile.loops.size(); ++l) {
     const MeridianLoop& loop = v.profile.loops[l];
     const std::string tag = v.profile.loops.size() > 1 ? " " + std::to_string(l + 1) : "";
-    Series fitted{l == 0 ? (v.profile.rings ? "ring points" : "thinned points") : "",
+    Series fitted{l > 0             ? ""
+                  : r.is_sections   ? "slab points"
+                  : v.profile.rings ? "ring points"
+                                    : "thinned points",
                   {},
                   {},
                   Series::Style::markers,
@@ -40,7 +50,11 @@ Figure sweep_profile_figure(const SweepJobResult& r) {
       fitted.y.push_back(loop.points(1, k));
     }
     p.add(fitted);
-    Series curve{"profile" + tag, {}, {}, Series::Style::line, "#14c"};
+    Series curve{r.is_sections ? (l == 0 ? "sections" : "") : "profile" + tag,
+                 {},
+                 {},
+                 Series::Style::line,
+                 "#14c"};
     for (int s = 0; s <= 2000; ++s) {
       const Eigen::Vector2d q = loop.curve.point(
           loop.curve.front() + (loop.curve.back() - loop.curve.front()) * s / 2000);
@@ -60,15 +74,20 @@ Figure sweep_profile_figure(const SweepJobResult& r) {
 Figure sweep_preview_figure(const SweepJobResult& r) {
   const SweptFit& v = r.fit();
   Figure f(900, 450);
-  f.title = r.is_extrusion ? "deviation of every point from the extruded surface"
-                           : "deviation of every point from the surface of revolution";
+  f.title = r.is_sections    ? "deviation of every point from the skinned surface"
+            : r.is_extrusion ? "deviation of every point from the extruded surface"
+                             : "deviation of every point from the surface of revolution";
   Plot& p = f.add_panel();
-  p.x_label = r.is_extrusion ? "angle φ about the section's centroid [°]" : "z along the axis [mm]";
+  p.x_label = r.is_sections    ? "s along the spine [mm]"
+              : r.is_extrusion ? "angle φ about the section's centroid [°]"
+                               : "z along the axis [mm]";
   p.y_label = "signed distance [mm]";
   Series d{"points", {}, {}, Series::Style::markers, "#14c"};
   for (Eigen::Index k = 0; k < v.distances.size(); k += figure_stride(v.distances.size())) {
-    d.x.push_back(r.is_extrusion ? std::atan2(v.plane(1, k), v.plane(0, k)) * 180 / std::numbers::pi
-                                 : v.plane(0, k));
+    d.x.push_back(r.is_sections ? r.sections->s[k]
+                  : r.is_extrusion
+                      ? std::atan2(v.plane(1, k), v.plane(0, k)) * 180 / std::numbers::pi
+                      : v.plane(0, k));
     d.y.push_back(v.distances[k]);
   }
   p.add(d);

@@ -11,6 +11,22 @@
 
 namespace polarform {
 
+// The derivative of the Lagrange parabola through (a, p0), (b, p1), (e, p2) at x.
+CubicEnds bessel_ends(const Eigen::MatrixXd& values, const Eigen::VectorXd& t) {
+  const Eigen::Index N = values.cols();
+  if (N < 3 || t.size() != N)
+    throw InputError("bessel_ends: " + std::to_string(N) + " values and " +
+                     std::to_string(t.size()) + " parameters; expected at least 3 of each");
+  const auto slope = [&](Eigen::Index i, double x) {
+    const double a = t[i], b = t[i + 1], e = t[i + 2];
+    if (!(a < b && b < e)) throw InputError("bessel_ends: the parameters must increase strictly");
+    return Eigen::VectorXd(values.col(i) * ((2 * x - b - e) / ((a - b) * (a - e))) +
+                           values.col(i + 1) * ((2 * x - a - e) / ((b - a) * (b - e))) +
+                           values.col(i + 2) * ((2 * x - a - b) / ((e - a) * (e - b))));
+  };
+  return CubicEnds{slope(0, t[0]), slope(N - 3, t[N - 1])};
+}
+
 BSpline interpolate_cubic(const Eigen::MatrixXd& values, const Eigen::VectorXd& t,
                           const CubicEnds& ends) {
   const int N = static_cast<int>(values.cols());

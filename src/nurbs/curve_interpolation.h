@@ -17,6 +17,11 @@ struct CubicEnds {
   std::optional<Eigen::VectorXd> start_tangent, end_tangent;
 };
 
+// Bessel end tangents: the derivatives at t_1 and t_N of the parabolas through the first and the
+// last three values (de Boor 1978, ch. IV; NURBS Book §9.2.2); third-order ends where natural ends
+// force a wrong C″ = 0 on a curved run. Needs N >= 3 values at strictly increasing parameters.
+CubicEnds bessel_ends(const Eigen::MatrixXd& values, const Eigen::VectorXd& parameters);
+
 // values: dim × N (N >= 2), parameters strictly increasing. Throws InputError otherwise.
 BSpline interpolate_cubic(const Eigen::MatrixXd& values, const Eigen::VectorXd& parameters,
                           const CubicEnds& ends = {});

@@ -1,6 +1,7 @@
 // `polarform sweep`: recover a swept surface from a scan or mesh of a turned or extruded part
 // (Kantz 2003): the axis and meridian profile of a surface of revolution, or the direction and
-// section of an extrusion, and the exact surface, with the true distances of every point. Exit 1
+// section of an extrusion, and the exact surface; or the skin of star-shaped sections along a
+// straight or curved spine (--kind sections); with the true distances of every point. Exit 1
 // when --tol is not met (the bundle is written, the report says by how much).
 #include <cstdio>
 #include <filesystem>
@@ -20,7 +21,8 @@ namespace {
 
 struct SweepArgs {
   // Empty: not given (the project's value, or the default).
-  std::string scan, out, kind, axis, center, tol, degree, corner_angle, threads = "2", interrogate;
+  std::string scan, out, kind, axis, center, tol, degree, corner_angle, threads = "2", interrogate,
+                                                                        sections, spine;
   bool skip_bad = false, quiet = false, lenient = false;
 };
 
@@ -31,9 +33,14 @@ Eigen::Vector3d vector3(const std::string& option, const std::string& text) {
 
 // The options given on the command line, over `o` (a project's or the defaults).
 SweepJobOptions job_options(const SweepArgs& a, SweepJobOptions o) {
-  constexpr SweepKind kinds[] = {SweepKind::automatic, SweepKind::revolution, SweepKind::extrusion};
+  constexpr SweepKind kinds[] = {SweepKind::automatic, SweepKind::revolution, SweepKind::extrusion,
+                                 SweepKind::sections};
   if (!a.kind.empty())
-    o.kind = kinds[parse_choice("--kind", a.kind, {"auto", "revolution", "extrusion"})];
+    o.kind = kinds[parse_choice("--kind", a.kind, {"auto", "revolution", "extrusion", "sections"})];
+  if (!a.sections.empty()) o.sections = parse_int_pair("--sections", a.sections, 2, 1000).first;
+  constexpr SpineShape spines[] = {SpineShape::automatic, SpineShape::straight, SpineShape::curved};
+  if (!a.spine.empty())
+    o.spine = spines[parse_choice("--spine", a.spine, {"auto", "straight", "curved"})];
   if (!a.axis.empty()) o.axis = vector3("--axis", a.axis);
   if (!a.center.empty()) o.center = vector3("--center", a.center);
   if (!a.tol.empty()) {
@@ -70,7 +77,12 @@ void run(const SweepArgs& a) {
   const std::vector<std::string> files = write_sweep_outputs(r, a.out);
   const SweptFit& v = r.fit();
   if (!a.quiet) {
-    if (r.is_extrusion) {
+    if (r.is_sections) {
+      std::printf("%s: %ld points, %zu sections skinned along a %s spine of %.9g mm\n",
+                  r.input.filename().string().c_str(), static_cast<long>(r.points.cols()),
+                  r.sections->stations.size(), r.sections->spine_curved ? "curved" : "straight",
+                  r.sections->spine_length);
+    } else if (r.is_extrusion) {
       const Eigen::Vector3d& d = r.extrusion->direction;
       std::printf("%s: %ld points, extrusion along (%.9g, %.9g, %.9g), length %.9g mm\n",
                   r.input.filename().string().c_str(), static_cast<long>(r.points.cols()), d.x(),
@@ -86,7 +98,7 @@ void run(const SweepArgs& a) {
     std::printf(
         "%zu %s loop(s), surface degree (%d, %d); distance of all points rms %.4g, p95 %.4g, "
         "max %.4g mm\n",
-        v.profile.loops.size(), r.is_extrusion ? "section" : "profile",
+        v.profile.loops.size(), r.is_extrusion || r.is_sections ? "section" : "profile",
         v.surfaces.empty() ? 0 : v.surfaces[0].degree_u(),
         v.surfaces.empty() ? 0 : v.surfaces[0].degree_v(), v.error.rms, v.error.p95, v.error.max);
     std::printf("wrote %zu files to %s (%.0f ms)\n", files.size(),
@@ -111,16 +123,22 @@ void add_sweep_command(CLI::App& app) {
       "against the section), every point projected onto the section plane, the section fitted\n"
       "(polar fit when star-shaped), extruded exactly (degree (p, 1)). --kind auto decides by the\n"
       "normals (flat: extrusion; in planes through the axis: revolution; else both, the better\n"
-      "kept). SCAN is any file fit reads (xyz/csv, PLY, STL, OBJ, OFF).\n"
-      "Writes surface.igs/.stp/.x3d, profile.igs/.stp/.dxf/.svg, solid.stp (an extrusion of one\n"
-      "closed section), deviation.ply, preview.svg, report.json and report.html.\n"
+      "kept). --kind sections (never chosen by auto): sections sliced perpendicular to a spine\n"
+      "(the PCA axis, bent through the section centres until it moves less than the tolerance),\n"
+      "each fitted as a closed star-shaped polar curve on one base circle and knot vector, "
+      "skinned\n"
+      "(NURBS Book 10.3), stations added where the skin misses the points (adaptive slicing).\n"
+      "SCAN is any file fit reads (xyz/csv, PLY, STL, OBJ, OFF).\n"
+      "Writes surface.igs/.stp/.x3d, profile.igs/.stp/.dxf/.svg (sections: sections.igs/.svg),\n"
+      "solid.stp (an extrusion of one closed section), deviation.ply, preview.svg, report.json\n"
+      "and report.html.\n"
       "Exit 1 when --tol is not met (files written), 2 on bad input.");
   cmd->add_option("scan", args->scan,
                   "point cloud or mesh file, or a sweep project (.xml, see docs/file-formats.md) "
                   "naming one")
       ->required();
   cmd->add_option("--out", args->out, "output directory (created if missing)")->required();
-  cmd->add_option("--kind", args->kind, "auto|revolution|extrusion (default auto)");
+  cmd->add_option("--kind", args->kind, "auto|revolution|extrusion|sections (default auto)");
   cmd->add_option("--axis", args->axis,
                   "X,Y,Z: the axis or extrusion direction to start from (default: PCA or the "
                   "normals; refined either way)");
@@ -130,6 +148,11 @@ void add_sweep_command(CLI::App& app) {
   cmd->add_option("--degree", args->degree, "profile degree p (default 3)");
   cmd->add_option("--corner-angle", args->corner_angle,
                   "turning angle of a profile corner [deg] (default 30)");
+  cmd->add_option("--sections", args->sections,
+                  "--kind sections: exactly N sections (default: adaptive slicing)");
+  cmd->add_option("--spine", args->spine,
+                  "--kind sections: auto|straight|curved (default auto: straight unless the "
+                  "section centres leave the PCA axis by more than the tolerance)");
   add_interrogate_option(*cmd, args->interrogate);
   cmd->add_option("--threads", args->threads, "worker threads (default 2)");
   cmd->add_flag("--skip-bad", args->skip_bad, "drop unreadable records instead of failing");

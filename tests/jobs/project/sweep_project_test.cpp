@@ -58,12 +58,14 @@ TEST(SweepProject, MinimalFileTakesTheDefaults) {
   EXPECT_EQ(e.tolerance, 0.02);
   EXPECT_EQ(e.degree, 2);
   EXPECT_EQ(e.corner_angle_deg, 45);
+  EXPECT_EQ(parse("<sweep scan=\"c.xyz\" kind=\"sections\"/>").kind, SweepKind::sections);
+  EXPECT_STREQ(sweep_kind_word(SweepKind::sections), "sections");
 }
 
 TEST(SweepProject, BadValuesNameFileLineAndAttribute) {
   EXPECT_NE(error_of("").find("sweep.xml:2: <sweep> attribute 'scan'"), std::string::npos)
       << error_of("");
-  EXPECT_NE(error_of("scan=\"a\" kind=\"sections\"").find("'kind'"), std::string::npos);
+  EXPECT_NE(error_of("scan=\"a\" kind=\"trajectory\"").find("'kind'"), std::string::npos);
   EXPECT_NE(error_of("scan=\"a\" axis=\"0,0,0\"").find("'axis'"), std::string::npos);
   EXPECT_NE(error_of("scan=\"a\" axis=\"0,0\"").find("'axis'"), std::string::npos);
   EXPECT_NE(error_of("scan=\"a\" center=\"1,2,3\"").find("'center'"), std::string::npos);

@@ -1,6 +1,7 @@
 // The sweep job end to end: a ring mesh of a walled tube and a sampled elliptic prism written as
 // xyz, their kinds decided, recovered and written as bundles whose report.json carries the axis or
-// the extrusion, the profile and the errors; bad options are refused by name.
+// the extrusion, the profile and the errors; a bent tube recovered by sections (its report's
+// sections block); bad options and sections that are not closed are refused by name.
 #include "jobs/sweep/sweep_job.h"
 
 #include <gtest/gtest.h>
@@ -112,6 +113,76 @@ TEST(SweepJob, AutoFindsAnExtrusionAndWritesItsSolid) {
   EXPECT_FALSE(j.contains("axis"));
 }
 
+// A bent tube: a torus segment (spine radius 40, tube radius 4, 90°), 6000 points, no noise.
+std::filesystem::path write_bent_tube(const std::filesystem::path& dir,
+                                      double sweep = 0.5 * std::numbers::pi,
+                                      double tube_turn = 2 * std::numbers::pi) {
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path file = dir / "bent.xyz";
+  std::ofstream out(file);
+  out.precision(17);
+  std::mt19937_64 rng(4);
+  std::uniform_real_distribution<double> U(0, 1);
+  for (int k = 0; k < 6000; ++k) {
+    const double phi = sweep * U(rng), th = tube_turn * U(rng);
+    const double rho = 40 + 4 * std::cos(th);
+    out << rho * std::cos(phi) << ' ' << rho * std::sin(phi) << ' ' << 4 * std::sin(th) << '\n';
+  }
+  return file;
+}
+
+TEST(SweepJob, SectionsBundleAndReport) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "polarform_sweep_job_sections";
+  std::filesystem::remove_all(dir);
+  SweepJobOptions o;
+  o.kind = SweepKind::sections;
+  const SweepJobResult r = run_sweep_job(write_bent_tube(dir), o);
+  ASSERT_TRUE(r.is_sections);
+  EXPECT_EQ(r.kind(), "sections");
+  const std::vector<std::string> files = write_sweep_outputs(r, dir / "out");
+  for (const char* f : {"surface.igs", "surface.stp", "surface.x3d", "sections.igs", "sections.svg",
+                        "deviation.ply", "preview.svg", "report.json", "report.html"})
+    EXPECT_TRUE(std::filesystem::exists(dir / "out" / f)) << f;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out" / "profile.igs"));
+  std::ifstream in(dir / "out" / "report.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["kind"], "sections");
+  const nlohmann::json& s = j["sections"];
+  EXPECT_EQ(s["count"].get<std::size_t>(), r.sections->stations.size());
+  EXPECT_EQ(s["stations"].size(), s["count"].get<std::size_t>());
+  EXPECT_GE(s["count"].get<int>(), 3);
+  EXPECT_EQ(s["spine"]["kind"], "curved");
+  // The spine runs between the end sections' centres: a quarter of the circle of radius 40.
+  EXPECT_NEAR(s["spine"]["length_mm"].get<double>(), 20 * std::numbers::pi, 0.05);
+  for (const nlohmann::json& st : s["stations"]) {
+    EXPECT_NEAR(st["mean_radius_mm"].get<double>(), 4.0, 2e-3);
+    EXPECT_LE(st["max_mm"].get<double>(), 2e-3);
+  }
+  EXPECT_FALSE(j.contains("profile"));
+  EXPECT_EQ(j["error_mm"]["count"], 6000);
+  EXPECT_LE(j["error_mm"]["max"].get<double>(), j["tolerance_mm"].get<double>() + 2e-3);
+  EXPECT_TRUE(j["timings_s"].contains("skin"));
+}
+
+TEST(SweepJob, SectionsThatAreNotClosedAreAnInputError) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "polarform_sweep_job_open_sections";
+  std::filesystem::remove_all(dir);
+  SweepJobOptions o;
+  o.kind = SweepKind::sections;
+  // Only the outer half of the tube: every section is an open arc.
+  const std::filesystem::path file = write_bent_tube(dir, 0.5 * std::numbers::pi, std::numbers::pi);
+  try {
+    run_sweep_job(file, o);
+    ADD_FAILURE() << "open sections were skinned";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("bent.xyz"), std::string::npos) << what;
+    EXPECT_NE(what.find("not closed"), std::string::npos) << what;
+  }
+}
+
 TEST(SweepJob, BadOptionsAreRefusedByName) {
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() / "polarform_sweep_job_bad";
@@ -127,6 +198,12 @@ TEST(SweepJob, BadOptionsAreRefusedByName) {
   o.axis = Eigen::Vector3d::Zero();
   EXPECT_THROW(run_sweep_job(file, o), InputError);
   EXPECT_THROW(run_sweep_job(dir / "missing.xyz", {}), InputError);
+  o = {};
+  o.sections = 4;  // only with the kind sections
+  EXPECT_THROW(run_sweep_job(file, o), InputError);
+  o.kind = SweepKind::sections;
+  o.axis = Eigen::Vector3d::UnitY();  // the sections' spine starts from PCA
+  EXPECT_THROW(run_sweep_job(file, o), InputError);
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 // The sweep job's extrusion bundle read back by Open CASCADE: solid.stp is one valid solid whose
 // volume is the recovered section's area times the length (the exact prism's π·a·b·L within the
 // fit's tolerance), placed where the points are (its centre of mass on the prism's axis);
-// surface.stp is the extruded surface itself (points within 1e-9 mm).
+// surface.stp is the extruded surface itself (points within 1e-9 mm). The kind sections' skin of a
+// bent tube arrives as one face carrying the same surface.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -77,6 +78,29 @@ TEST(SweepOcct, ExtrusionSolidAndSurfaceArriveIntact) {
 
   const TopoDS_Shape surface = read_step(dir / "out" / "surface.stp");
   const std::vector<TopoDS_Face> faces = faces_of(surface);
+  ASSERT_EQ(faces.size(), 1u);
+  expect_same_surface(faces[0], r.fit().surfaces[0], false);
+}
+
+TEST(SweepOcct, SectionsSkinArrivesIntact) {
+  const ScratchDir dir("sweep_occt_sections");
+  {
+    std::ofstream out(dir / "bent.xyz");
+    out.precision(17);
+    std::mt19937_64 rng(6);
+    std::uniform_real_distribution<double> U(0, 1);
+    for (int k = 0; k < 6000; ++k) {  // a torus segment: spine radius 40, tube radius 4, 90°
+      const double phi = 0.5 * std::numbers::pi * U(rng), th = 2 * std::numbers::pi * U(rng);
+      const double rho = 40 + 4 * std::cos(th);
+      out << rho * std::cos(phi) << ' ' << rho * std::sin(phi) << ' ' << 4 * std::sin(th) << '\n';
+    }
+  }
+  SweepJobOptions o;
+  o.kind = SweepKind::sections;
+  const SweepJobResult r = run_sweep_job(dir / "bent.xyz", o);
+  ASSERT_TRUE(r.is_sections);
+  write_sweep_outputs(r, dir / "out");
+  const std::vector<TopoDS_Face> faces = faces_of(read_step(dir / "out" / "surface.stp"));
   ASSERT_EQ(faces.size(), 1u);
   expect_same_surface(faces[0], r.fit().surfaces[0], false);
 }

@@ -1,5 +1,6 @@
 // Cubic interpolation with knots at the data parameters: through every point, natural ends
-// (C″ = 0), and exact on a cubic polynomial when its end tangents are given.
+// (C″ = 0), and exact on a cubic polynomial when its end tangents are given; Bessel ends are
+// exact on a parabola, so the interpolant with them reproduces it.
 #include "src/nurbs/curve_interpolation.h"
 
 #include <gtest/gtest.h>
@@ -38,6 +39,25 @@ TEST(CubicInterpolation, ReproducesACubicGivenItsEndTangents) {
     const double x = t[6] * k / 100;
     EXPECT_NEAR(c.point(x)(0), f(x), 1e-12);
   }
+}
+
+TEST(CubicInterpolation, BesselEndsReproduceAParabola) {
+  Eigen::MatrixXd p(1, 7);
+  Eigen::VectorXd t(7);
+  const auto f = [](double x) { return 2.0 - 0.7 * x + 0.3 * x * x; };
+  for (int k = 0; k < 7; ++k) {
+    t[k] = k + 0.4 * std::cos(k);
+    p(0, k) = f(t[k]);
+  }
+  const CubicEnds ends = bessel_ends(p, t);
+  EXPECT_NEAR((*ends.start_tangent)[0], -0.7 + 0.6 * t[0], 1e-12);
+  EXPECT_NEAR((*ends.end_tangent)[0], -0.7 + 0.6 * t[6], 1e-12);
+  const BSpline c = interpolate_cubic(p, t, ends);
+  for (int k = 0; k <= 200; ++k) {
+    const double x = t[0] + (t[6] - t[0]) * k / 200.0;
+    EXPECT_NEAR(c.point(x)[0], f(x), 1e-12) << x;
+  }
+  EXPECT_THROW(bessel_ends(p.leftCols(2), t.head(2)), InputError);
 }
 
 TEST(CubicInterpolation, RefusesParametersThatDoNotIncrease) {

@@ -1,14 +1,17 @@
 // `polarform sweep` as a user runs it: a sweep project naming a sampled elliptic prism (exit 0,
 // "extrusion" on stdout, solid.stp written), a --tol over the project's that cannot be met (exit
 // 1, the achieved figure, files written), and a bad project value (exit
-// 2, one line naming file, line and attribute, nothing written).
+// 2, one line naming file, line and attribute, nothing written); --kind sections on a bent tube
+// (exit 0, the section count on stdout) and on half a tube (exit 2, one line: not closed).
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <numbers>
 #include <random>
+#include <string>
 
 #include "tests/support/jobs/cam_job_support.h"
 #include "tests/ui/cli/cli_run.h"
@@ -66,6 +69,42 @@ TEST(SweepCli, ABadProjectValueIsOneLineAndWritesNothing) {
   EXPECT_NE(run.err.find("bad.xml:2: <sweep> attribute 'center'"), std::string::npos) << run.err;
   EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
   EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+// A torus segment (spine radius 30, tube radius 3, 90°), only the tube's angles in [0, turn).
+void write_bent_tube(const ScratchDir& dir, const std::string& name, double turn) {
+  std::ofstream out(dir / name);
+  out.precision(17);
+  std::mt19937_64 rng(8);
+  std::uniform_real_distribution<double> U(0, 1);
+  for (int k = 0; k < 5000; ++k) {
+    const double phi = 0.5 * std::numbers::pi * U(rng), th = turn * U(rng);
+    const double rho = 30 + 3 * std::cos(th);
+    out << rho * std::cos(phi) << ' ' << rho * std::sin(phi) << ' ' << 3 * std::sin(th) << '\n';
+  }
+}
+
+TEST(SweepCli, SectionsOfABentTubeAndOfHalfATube) {
+  const ScratchDir dir("sweep_cli_sections");
+  write_bent_tube(dir, "bent.xyz", 2 * std::numbers::pi);
+  const CliRun ok = run_cli(
+      {"sweep", (dir / "bent.xyz").string(), "--kind", "sections", "--out", (dir / "out").string()},
+      dir);
+  EXPECT_EQ(ok.status, 0) << ok.err;
+  EXPECT_NE(ok.out.find("sections skinned along a curved spine"), std::string::npos) << ok.out;
+  EXPECT_TRUE(fs::exists(dir / "out" / "sections.igs"));
+  write_bent_tube(dir, "half.xyz", std::numbers::pi);
+  const CliRun half = run_cli({"sweep", (dir / "half.xyz").string(), "--kind", "sections", "--out",
+                               (dir / "half").string()},
+                              dir);
+  EXPECT_EQ(half.status, 2);
+  EXPECT_NE(half.err.find("not closed"), std::string::npos) << half.err;
+  EXPECT_EQ(std::count(half.err.begin(), half.err.end(), '\n'), 1) << half.err;
+  EXPECT_FALSE(fs::exists(dir / "half"));
+  const CliRun one = run_cli({"sweep", (dir / "bent.xyz").string(), "--kind", "sections",
+                              "--sections", "1", "--out", (dir / "one").string()},
+                             dir);
+  EXPECT_EQ(one.status, 2) << one.err;
 }
 
 }  // namespace
