@@ -250,7 +250,8 @@ json fit_report_fields(const FitJobResult& r) {
     j["quadric"] = fr.quadric ? quadric_json(*fr.quadric) : json(nullptr);
     j["frame"] = frame_json(fr.frame, fr.reason);
     json candidates = json::array();
-    for (const FrameCandidate& c : f.frame_candidates) {
+    for (std::size_t i = 0; i < f.frame_candidates.size(); ++i) {
+      const FrameCandidate& c = f.frame_candidates[i];
       json e{{"name", c.name}, {"origin", vec(c.origin)}, {"axis", vec(c.axis)}, {"how", c.how}};
       e["rms_mm"] = c.rms >= 0.0 ? json(c.rms) : json(nullptr);
       if (c.rms >= 0.0) {
@@ -259,7 +260,7 @@ json fit_report_fields(const FitJobResult& r) {
         e["coefficients"] = c.coefficients;
         e["points"] = c.points;
       }
-      e["chosen"] = c.origin.isApprox(fr.frame.origin) && c.axis.isApprox(fr.frame.axes.col(2));
+      e["chosen"] = static_cast<int>(i) == f.chosen_candidate;
       if (!c.failure.empty()) e["failure"] = c.failure;
       candidates.push_back(std::move(e));
     }

@@ -228,10 +228,12 @@ RotationalFit choose_frame(RotationalFit fit, const Eigen::Matrix3Xd& points,
         },
         r.fit);
     r.frame_candidates = std::move(list);
+    r.chosen_candidate = static_cast<int>(chosen);
     return std::move(r);
   }
   fit.reason += why.str();
   fit.frame_candidates = std::move(list);
+  fit.chosen_candidate = static_cast<int>(chosen);
   return fit;
 }
 
@@ -257,6 +259,7 @@ RotationalFit choose_method_and_frame(const Eigen::Matrix3Xd& points, const Rota
   try {
     RotationalFit alt = choose_frame(fit_chosen_method(points, other_method, &undecided), points,
                                      other_method, fixed_net);
+    const int offset = static_cast<int>(fit.frame_candidates.size());
     for (const FrameCandidate& c : alt.frame_candidates) {
       fit.frame_candidates.push_back(c);
       fit.frame_candidates.back().name = to_string(alt.method()) + " fit, " + c.name;
@@ -266,6 +269,7 @@ RotationalFit choose_method_and_frame(const Eigen::Matrix3Xd& points, const Rota
                    " fit in its best frame is closer (RMS distance " +
                    std::to_string(alt.report().error.rms) + " mm): " + to_string(alt.method());
       alt.frame_candidates = std::move(fit.frame_candidates);
+      if (alt.chosen_candidate >= 0) alt.chosen_candidate += offset;
       return alt;
     }
   } catch (const InputError&) {
@@ -306,6 +310,7 @@ RotationalFit fit_rotational(const Eigen::Matrix3Xd& points, const RotationalFit
       },
       fit.fit);
   fit.frame_candidates = decision.frame_candidates;
+  fit.chosen_candidate = decision.chosen_candidate;
   return fit;
 }
 

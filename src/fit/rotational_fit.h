@@ -32,6 +32,7 @@ struct RotationalFit {
   // alone explained the data in it; the fit uses the best by the rule of fit_rotational (empty
   // when origin and axis were both given).
   std::vector<FrameCandidate> frame_candidates;
+  int chosen_candidate = -1;  // the index of the frame used in frame_candidates (-1: none listed)
 
   FitMethod method() const;
   const NurbsSurface& surface() const;

@@ -65,10 +65,12 @@ TEST(FitOutputs, SphereLikeExampleWritesEveryFileAndASaneReport) {
   // candidate, within 0.1 % of the smallest rms (later frames win such ties).
   ASSERT_GE(j["frame_candidates"].size(), 2u);
   double best = 1e300, chosen = -1.0;
+  int chosen_count = 0;
   for (const auto& c : j["frame_candidates"]) {
     if (!c["rms_mm"].is_null()) best = std::min(best, c["rms_mm"].get<double>());
-    if (c["chosen"].get<bool>()) chosen = c["rms_mm"].get<double>();
+    if (c["chosen"].get<bool>()) chosen = c["rms_mm"].get<double>(), ++chosen_count;
   }
+  EXPECT_EQ(chosen_count, 1);
   EXPECT_DOUBLE_EQ(chosen, j["error_mm"]["rms"].get<double>());
   EXPECT_LE(chosen, best * (1.0 + 1e-3));
   const auto& e = j["error_mm"];

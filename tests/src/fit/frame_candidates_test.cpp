@@ -167,6 +167,7 @@ TEST(FrameCandidates, SpheroidWithAGivenCentreFindsItsAxis) {
     EXPECT_LT(f.report().error.rms, 1.2 * 0.01) << f.reason;
     ASSERT_EQ(f.frame_candidates.size(), 2u);
     EXPECT_EQ(f.frame_candidates[1].name, "PCA + profile refinement through the given centre");
+    EXPECT_EQ(f.chosen_candidate, 1) << f.reason;
   }
 }
 
@@ -184,6 +185,8 @@ TEST(FrameCandidates, LargeCloudScoresFramesOnASubsample) {
       << f.reason;
   for (const FrameCandidate& c : f.frame_candidates) EXPECT_EQ(c.points, 83334u) << c.name;
   EXPECT_EQ(f.report().error.count, 250000u);
+  ASSERT_EQ(f.chosen_candidate, 2) << f.reason;
+  EXPECT_EQ(f.frame_candidates[2].name, "PCA + profile refinement");
   EXPECT_TRUE(f.report().revolution.rotational) << f.reason;
   EXPECT_LT(degrees_between(f.frame().frame.axes.col(2), m.R.col(2)), 2e-4) << f.reason;
   EXPECT_LE(vase_truth_rms(f.surface(), m), 1e-3) << f.reason;
