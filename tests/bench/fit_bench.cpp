@@ -179,10 +179,10 @@ BENCHMARK(BM_DefaultFit)
     ->Iterations(1)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
-// Measured (Release, 2 cores shared with two compilers at load 6, 2026-12-05): CPU 10^5 4.7 s,
-// 10^6 5.5 s, 10^7 21.4 s (3.9 ×); wall 7.7 s / 20.1 s / 71.9 s under that load; peak 114 MiB
-// at 10^6, 1043 MiB at 10^7 (read alone 507 MiB). Method and frame are chosen on a 100,000-point
-// subsample above 200,000 points, and one fit touches every point.
+// Measured (Release, 2 cores, idle, 2026-12-05): wall 10^5 3.6 s, 10^6 3.8 s, 10^7 13.7 s
+// (3.6 ×); CPU 5.1 / 5.5 / 21.0 s; peak 114 MiB at 10^6, 1043 MiB at 10^7 (read alone 507 MiB).
+// Method and frame are chosen on a 100,000-point subsample above 200,000 points, and one fit
+// touches every point.
 BENCHMARK(BM_DefaultFit)
     ->Arg(10000000)
     ->Iterations(1)
