@@ -29,31 +29,6 @@ using Eigen::Vector2d;
 using namespace cam_job_test;
 constexpr double pi = std::numbers::pi;
 
-// The height on the follower axis x = e of a roller of radius r resting on the curve (from above,
-// side +1) or hanging under it (side -1) at cam angle θ: the extreme over the curve's points in
-// the fixed frame of y ± sqrt(r² − (x − e)²), the best of `samples` refined by golden-section
-// search on the curve's parameter.
-double roller_height(const NurbsCurve2d& c, double theta, int sigma, double e, double r, int side,
-                     int samples = 8000) {
-  const Eigen::Rotation2Dd turn(sigma * theta);  // cam frame to fixed frame
-  const auto height = [&](double u) {
-    const Vector2d x = turn * c.point(u);
-    const double dx = x.x() - e;
-    return std::abs(dx) < r ? side * (x.y() + side * std::sqrt(r * r - dx * dx)) : -1e300;
-  };
-  const double a = c.front(), h = (c.back() - a) / samples;
-  int best = 0;
-  for (int i = 1; i < samples; ++i)
-    if (height(a + i * h) > height(a + best * h)) best = i;
-  double lo = a + (best - 1) * h, hi = a + (best + 1) * h;
-  const double g = (std::sqrt(5.0) - 1) / 2;
-  for (int it = 0; it < 60; ++it) {
-    const double m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
-    (height(m1) > height(m2) ? hi : lo) = height(m1) > height(m2) ? m2 : m1;
-  }
-  return side * std::max(height(0.5 * (lo + hi)), height(a + best * h));
-}
-
 TEST(ConjugateCamJob, TheRollersKeepTheirDistanceAndTouchBothCams) {
   const ExampleRun& run = example("conjugate");
   const CamJobResult& r = run.result;
@@ -77,8 +52,8 @@ TEST(ConjugateCamJob, TheRollersKeepTheirDistanceAndTouchBothCams) {
   double worst = 0;
   for (int i = 0; i < 360; ++i) {
     const double theta = 2 * pi * i / 360;
-    const double top = roller_height(first, theta, o.sigma, o.e, rr, 1);
-    const double bottom = roller_height(second, theta, o.sigma, o.e, rr, -1);
+    const double top = test::roller_height(first, theta, o.sigma, o.e, rr, 1);
+    const double bottom = test::roller_height(second, theta, o.sigma, o.e, rr, -1);
     worst = std::max(worst, std::abs(top - bottom - distance));
     // And each where the oracle puts it.
     ASSERT_NEAR(top, o.roller_centre(theta).y(), 2 * tol) << theta;

@@ -49,30 +49,6 @@ CamProject project(const std::string& second, const std::string& dynamics) {
   return parse_cam_project(text, "steep.xml", warnings);
 }
 
-// The height on the follower axis x = e of a roller of radius r resting on the curve (side +1)
-// or hanging under it (side −1) at cam angle θ: the extreme of y ± sqrt(r² − (x − e)²) over the
-// curve's points in the fixed frame, the best of `samples` refined by golden-section search.
-double roller_height(const NurbsCurve2d& c, double theta, int sigma, double e, double r, int side,
-                     int samples = 8000) {
-  const Eigen::Rotation2Dd turn(sigma * theta);
-  const auto height = [&](double u) {
-    const Vector2d x = turn * c.point(u);
-    const double dx = x.x() - e;
-    return std::abs(dx) < r ? side * (x.y() + side * std::sqrt(r * r - dx * dx)) : -1e300;
-  };
-  const double a = c.front(), h = (c.back() - a) / samples;
-  int best = 0;
-  for (int i = 1; i < samples; ++i)
-    if (height(a + i * h) > height(a + best * h)) best = i;
-  double lo = a + (best - 1) * h, hi = a + (best + 1) * h;
-  const double g = (std::sqrt(5.0) - 1) / 2;
-  for (int it = 0; it < 60; ++it) {
-    const double m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
-    (height(m1) > height(m2) ? hi : lo) = height(m1) > height(m2) ? m2 : m1;
-  }
-  return side * std::max(height(0.5 * (lo + hi)), height(a + best * h));
-}
-
 TEST(ConjugatePair, CentreDistanceIsMeasuredAndHeldBeyond45Degrees) {
   const CamProject p = project("", "");
   const CamJobResult r = run_cam_job(p);
@@ -91,8 +67,8 @@ TEST(ConjugatePair, CentreDistanceIsMeasuredAndHeldBeyond45Degrees) {
   double worst = 0;
   for (int i = 0; i < 720; ++i) {
     const double theta = 2 * pi * i / 720;
-    const double top = roller_height(first, theta, o.sigma, o.e, rr, 1);
-    const double bottom = roller_height(second, theta, o.sigma, o.e, rr, -1);
+    const double top = test::roller_height(first, theta, o.sigma, o.e, rr, 1);
+    const double bottom = test::roller_height(second, theta, o.sigma, o.e, rr, -1);
     worst = std::max(worst, std::abs(top - bottom - p.cam.conjugate->roller_distance));
   }
   EXPECT_LE(worst, tol);

@@ -17,7 +17,6 @@
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepGProp.hxx>
 #include <GProp_GProps.hxx>
-#include <STEPControl_Reader.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 
@@ -29,13 +28,6 @@ namespace {
 
 #if POLARFORM_HAVE_OCCT
 using namespace exchange_test;
-
-TopoDS_Shape read_step(const std::filesystem::path& file) {
-  STEPControl_Reader reader;
-  EXPECT_EQ(reader.ReadFile(file.c_str()), IFSelect_RetDone);
-  reader.TransferRoots();
-  return reader.OneShape();
-}
 
 TEST(SweepOcct, ExtrusionSolidAndSurfaceArriveIntact) {
   const ScratchDir dir("sweep_occt");
@@ -62,7 +54,7 @@ TEST(SweepOcct, ExtrusionSolidAndSurfaceArriveIntact) {
   ASSERT_TRUE(r.is_extrusion);
   write_sweep_outputs(r, dir / "out");
 
-  const TopoDS_Shape solid = read_step(dir / "out" / "solid.stp");
+  const TopoDS_Shape solid = read_exchange_file(dir / "out" / "solid.stp");
   TopTools_IndexedMapOfShape solids;
   TopExp::MapShapes(solid, TopAbs_SOLID, solids);
   EXPECT_EQ(solids.Extent(), 1);
@@ -76,7 +68,7 @@ TEST(SweepOcct, ExtrusionSolidAndSurfaceArriveIntact) {
   const Eigen::Vector3d centre = R * Eigen::Vector3d(0, 0, length / 2) + shift;
   EXPECT_LT((Eigen::Vector3d(g.X(), g.Y(), g.Z()) - centre).norm(), 1e-3);
 
-  const TopoDS_Shape surface = read_step(dir / "out" / "surface.stp");
+  const TopoDS_Shape surface = read_exchange_file(dir / "out" / "surface.stp");
   const std::vector<TopoDS_Face> faces = faces_of(surface);
   ASSERT_EQ(faces.size(), 1u);
   expect_same_surface(faces[0], r.fit().surfaces[0], false);
@@ -100,7 +92,7 @@ TEST(SweepOcct, SectionsSkinArrivesIntact) {
   const SweepJobResult r = run_sweep_job(dir / "bent.xyz", o);
   ASSERT_TRUE(r.is_sections);
   write_sweep_outputs(r, dir / "out");
-  const std::vector<TopoDS_Face> faces = faces_of(read_step(dir / "out" / "surface.stp"));
+  const std::vector<TopoDS_Face> faces = faces_of(read_exchange_file(dir / "out" / "surface.stp"));
   ASSERT_EQ(faces.size(), 1u);
   expect_same_surface(faces[0], r.fit().surfaces[0], false);
 }

@@ -2,11 +2,14 @@
 // distance to the nearest centre minus the roller radius (nearest by a window around the previous
 // point's, refined by a ternary search on θ), and every 10th centre's distance to the curve points
 // (so that the curve covers the whole envelope). Shared by the oscillating, grooved and conjugate
-// cam-job tests; the centre paths come from plain trigonometry (arm_oracle.h, the tests' own).
+// cam-job tests; the centre paths come from plain trigonometry (arm_oracle.h, the tests' own). And
+// the height a roller rests at on an exported curve (roller_height), the conjugate tests' check.
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <numbers>
 #include <vector>
@@ -72,6 +75,31 @@ inline std::vector<Eigen::Vector2d> dense_points(const NurbsCurve2d& c, int coun
   const double a = c.front(), b = c.back();
   for (int i = 0; i < count; ++i) out.push_back(c.point(a + (b - a) * i / count));
   return out;
+}
+
+// The height on the follower axis x = e of a roller of radius r resting on the curve (from above,
+// side +1) or hanging under it (side -1) at cam angle θ: the extreme over the curve's points in
+// the fixed frame of y ± sqrt(r² − (x − e)²), the best of `samples` refined by golden-section
+// search on the curve's parameter.
+inline double roller_height(const NurbsCurve2d& c, double theta, int sigma, double e, double r,
+                            int side, int samples = 8000) {
+  const Eigen::Rotation2Dd turn(sigma * theta);  // cam frame to fixed frame
+  const auto height = [&](double u) {
+    const Eigen::Vector2d x = turn * c.point(u);
+    const double dx = x.x() - e;
+    return std::abs(dx) < r ? side * (x.y() + side * std::sqrt(r * r - dx * dx)) : -1e300;
+  };
+  const double a = c.front(), h = (c.back() - a) / samples;
+  int best = 0;
+  for (int i = 1; i < samples; ++i)
+    if (height(a + i * h) > height(a + best * h)) best = i;
+  double lo = a + (best - 1) * h, hi = a + (best + 1) * h;
+  const double g = (std::sqrt(5.0) - 1) / 2;
+  for (int it = 0; it < 60; ++it) {
+    const double m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
+    (height(m1) > height(m2) ? hi : lo) = height(m1) > height(m2) ? m2 : m1;
+  }
+  return side * std::max(height(0.5 * (lo + hi)), height(a + best * h));
 }
 
 }  // namespace polarform::test
