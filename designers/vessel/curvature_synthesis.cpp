@@ -6,6 +6,7 @@
 #include <nlopt.hpp>
 #include <numbers>
 
+#include "designers/vessel/head_volume.h"
 #include "designers/vessel/nlopt_stop_reason.h"
 #include "designers/vessel/polar_curvature.h"
 #include "designers/vessel/synthesis_objective.h"
@@ -65,6 +66,21 @@ void equality_callback(unsigned m, double* result, unsigned n, const double* y, 
   if (grad)  // row-major m x n
     Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(grad, m, n) =
         e->rows;
+}
+
+// The head's volume V(x0 + P y) = volume: one nonlinear equality, scaled by L³.
+struct VolumeEquality {
+  const HeadVolumeConstraint* volume = nullptr;
+  const Whitened* w = nullptr;
+  double value = 0.0;  // V / L³
+};
+
+double volume_callback(unsigned n, const double* y, double* grad, void* data) {
+  const auto* e = static_cast<VolumeEquality*>(data);
+  Eigen::VectorXd g;
+  const double v = e->volume->value(e->w->x(y), grad ? &g : nullptr);
+  if (grad) Eigen::Map<Eigen::VectorXd>(grad, n) = e->w->P.transpose() * g;
+  return v - e->value;
 }
 
 std::string degrees(double rad) { return to_text(rad * 180 / kPi) + "°"; }
@@ -135,6 +151,14 @@ SynthesisResult synthesize_profile(const SynthesisProblem& problem) {
   opt.set_ftol_rel(1e-15);
   opt.set_maxeval(settings.max_iterations);
 
+  const HeadVolumeConstraint volume(space);
+  VolumeEquality volume_equality{&volume, &w, problem.volume ? *problem.volume / (L * L * L) : 0.0};
+  if (problem.volume) {
+    if (!(std::isfinite(*problem.volume) && *problem.volume > 0.0))
+      throw InputError("synthesis: volume " + to_text(*problem.volume) + " mm³, expected > 0");
+    opt.add_equality_constraint(volume_callback, &volume_equality, 1e-13);
+  }
+
   std::vector<double> y(m, 0.0);
   double value = 0.0;
   nlopt::result status = nlopt::FAILURE;
@@ -150,6 +174,7 @@ SynthesisResult synthesize_profile(const SynthesisProblem& problem) {
 
   SynthesisResult out;
   out.unknowns = m;
+  out.smoothing = settings.smoothing;
   out.free_parameters = ends.free_parameters;
   out.iterations = w.evaluations;
   Eigen::VectorXd gradient;
@@ -173,7 +198,8 @@ SynthesisResult synthesize_profile(const SynthesisProblem& problem) {
 
   for (const CurvatureTarget& t : problem.targets) {
     const Eigen::VectorXd d = out.profile.derivatives(t.theta, 2);
-    out.targets.push_back({t.theta, t.kappa, polar_curvature(d(0), d(1), d(2)), t.weight});
+    out.targets.push_back(
+        {t.theta, t.kappa, polar_curvature(d(0), d(1), d(2)), t.weight, t.place, t.position});
   }
   for (const EndConstraint& c : ends.imposed) {
     const double achieved = out.profile.derivatives(c.theta(), c.order)(c.order);
@@ -183,6 +209,14 @@ SynthesisResult synthesize_profile(const SynthesisProblem& problem) {
   if (out.max_violation > 1e-8 * L)
     throw NumericalError("synthesis: end conditions violated by up to " +
                          to_text(out.max_violation) + " after SLSQP (" + out.termination + ")");
+  if (problem.volume) {
+    const double achieved = volume.value(xv, nullptr) * L * L * L;
+    out.conditions.push_back({"V", *problem.volume, achieved});
+    if (std::abs(achieved - *problem.volume) > 1e-8 * *problem.volume)
+      throw NumericalError("synthesis: the volume " + to_text(achieved) + " mm³ misses " +
+                           to_text(*problem.volume) + " mm³ after SLSQP (" + out.termination +
+                           "); the targets and end conditions may not allow it");
+  }
 
   const auto [r_min, at] = min_radius(out.profile);
   out.min_radius = r_min;

@@ -10,6 +10,7 @@
 #include "designers/vessel/polar_curvature.h"
 #include "src/error.h"
 #include "src/nurbs/error_text.h"
+#include "src/nurbs/gauss_legendre.h"
 
 namespace polarform {
 
@@ -93,23 +94,15 @@ std::vector<double> head_angles(const PolarFunction& head, const VesselLoad& loa
 
 }  // namespace
 
-// ∫ √(R² + R'²) dθ, 4-point Gauss–Legendre on each interval (Abramowitz & Stegun 25.4.29).
+// ∫ √(R² + R'²) dθ, 4-point Gauss–Legendre on each interval (Abramowitz & Stegun 25.4.30).
 double arc_length(const PolarFunction& R, double a, double b, int intervals) {
-  static const double x[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563,
-                              0.8611363115940526};
-  static const double w[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461,
-                              0.3478548451374538};
-  double sum = 0.0;
-  const double h = (b - a) / intervals;
-  for (int k = 0; k < intervals; ++k) {
-    const double lo = a + k * h;
-    for (int i = 0; i < 4; ++i) {
-      double d[2];
-      R.derivatives(lo + 0.5 * h * (1 + x[i]), 1, d);
-      sum += 0.5 * h * w[i] * std::hypot(d[0], d[1]);
-    }
-  }
-  return sum;
+  return integrate_gauss_legendre(
+      [&](double theta) {
+        double d[2];
+        R.derivatives(theta, 1, d);
+        return std::hypot(d[0], d[1]);
+      },
+      a, b, intervals);
 }
 
 // r1 = 1/κ (DESIGN §4.4); r2 = x / n_x with the outward unit normal

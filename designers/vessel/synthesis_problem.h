@@ -9,10 +9,17 @@
 
 namespace polarform {
 
+// Where a target is given along the meridian: by the polar angle θ about the junction-plane
+// centre (Bae's), by the arc length s from junction A (θ = 0), or by the meridian angle φ of the
+// shell normal against the axis (90° at junction A, 0 at the apex, −90° at junction B).
+enum class TargetPlace { polar_angle, arc_length, meridian_angle };
+
 struct CurvatureTarget {
-  double theta = 0.0;   // rad, in [0, π]
+  double theta = 0.0;   // rad, in [0, π]; for the other places, where the design puts it
   double kappa = 0.0;   // 1/mm, positive where the wall turns towards the axis
   double weight = 1.0;  // > 0
+  TargetPlace place = TargetPlace::polar_angle;
+  double position = 0.0;  // s in mm or φ in rad (not used for the polar angle)
 
   bool operator==(const CurvatureTarget&) const = default;
 };
@@ -34,6 +41,11 @@ constexpr int kMaxOrdinates = 400;
 constexpr int kMaxSynthesisIterations = 10000;
 constexpr int kMaxCurvatureTargets = 20000;
 
+// How the smoothing weight λ is chosen: as given; the smallest λ whose curvature has no turning
+// point or inflection the targets do not have (smoothing_choice.h); the largest λ that meets every
+// target within kappa_tolerance.
+enum class SmoothingRule { fixed, shape_preserving, tolerance };
+
 struct SynthesisSettings {
   int degree = 5;       // of R(θ); >= 3 so that ∫(R''')² dθ is defined
   int ordinates = 20;   // control values; uniform clamped knots on [0, π]
@@ -42,6 +54,8 @@ struct SynthesisSettings {
   double smoothing = 1e-6;
   bool symmetric = false;     // R(π − θ) = R(θ): ordinates mirrored, half as many unknowns
   int max_iterations = 500;   // objective-and-gradient evaluations allowed to NLopt
+  SmoothingRule smoothing_rule = SmoothingRule::fixed;  // the vessel designer's choice of λ
+  double kappa_tolerance = 0.0;                         // 1/mm, for SmoothingRule::tolerance (> 0)
 
   bool operator==(const SynthesisSettings&) const = default;
 };
@@ -52,6 +66,8 @@ struct SynthesisProblem {
   EndCondition end_a;  // at θ = 0
   EndCondition end_b;  // at θ = π
   std::optional<double> depth;  // R(π/2), mm: the head's depth above the junction plane
+  // mm³ enclosed by the head (the A half revolved) and its junction plane: (2π/3)∫₀^{π/2} R³cosθ dθ
+  std::optional<double> volume;
   SynthesisSettings settings;
 };
 

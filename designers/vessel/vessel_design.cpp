@@ -5,7 +5,9 @@
 #include <cstdio>
 #include <numbers>
 
+#include "designers/vessel/head_volume.h"
 #include "designers/vessel/polar_curvature.h"
+#include "designers/vessel/target_placement.h"
 #include "src/error.h"
 #include "src/nurbs/error_text.h"
 
@@ -16,6 +18,10 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 // Slopes (rad) below this are the solver's round-off, not a kink worth a warning.
 constexpr double kSlopeTolerance = 1e-6;
+// Targets placed by s or φ: the synthesis is repeated until their θ move less than this (rad;
+// 0.5 µm of meridian on a 500 mm head, above the ~1e-7 rad the SLSQP results scatter by).
+constexpr double kPlacementTolerance = 1e-6;
+constexpr int kMaxPlacementRounds = 60;
 
 std::string short_text(double x) {
   char buf[32];
@@ -152,15 +158,39 @@ VesselSolution solve_curvature_design(const VesselDesign& design, const VesselLo
   problem.end_b = design.end_b.value_or(EndCondition::thesis_default(design.radius));
   problem.settings = design.synthesis;
   problem.depth = design.depth;
+  problem.volume = design.volume;
   problem.targets = design.targets;
   if (problem.targets.empty())
     problem.targets =
         preset_targets(head_shape(*design.preset, design.radius), design.preset_targets);
 
+  // Targets by arc length or meridian angle: placed on the start circle, then moved halfway to
+  // their places on every result until their polar angles stop moving (a damped fixed-point
+  // iteration; the smoothing re-chosen each round).
   VesselSolution out;
-  out.synthesis = synthesize_profile(problem);
+  place_targets_on_circle(problem.targets, problem.end_a.r.value_or(design.radius));
+  const bool placed =
+      std::any_of(problem.targets.begin(), problem.targets.end(),
+                  [](const CurvatureTarget& t) { return t.place != TargetPlace::polar_angle; });
+  std::optional<double> hint;
+  for (int round = 1;; ++round) {
+    out.synthesis = synthesize_with_chosen_smoothing(problem, out.smoothing, hint);
+    hint = out.smoothing.lambda;
+    out.placement_rounds = round;
+    if (!placed) break;
+    const std::vector<CurvatureTarget> before = problem.targets;
+    const double moved = place_targets(problem.targets, head_polar_function(out.synthesis.profile));
+    for (std::size_t k = 0; k < before.size(); ++k)  // damped: undamped rounds may oscillate
+      problem.targets[k].theta = 0.5 * (before[k].theta + problem.targets[k].theta);
+    if (moved < kPlacementTolerance) break;
+    if (round == kMaxPlacementRounds)
+      throw NumericalError("vessel: the targets given by s or φ still move by " + degrees(moved) +
+                           " after " + std::to_string(round) +
+                           " rounds of synthesis; give them by polar angle θ");
+  }
   out.profile = head_polar_function(out.synthesis.profile);
   out.curvature = sample_curvature(out.profile, 360);
+  out.measures_of_design = polar_head_measures(out.profile);
   analyse_head(out, load, design.poisson);
   if (design.preset) out.preset = compare_with_preset(*design.preset, design, out.profile, load);
   out.warnings = warnings_for(out, design);
@@ -185,6 +215,7 @@ VesselSolution solve_minimum_stress(const VesselDesign& design, const VesselLoad
   m.head = minimum_peak_stress_head(design.radius, depth, m.settings);
   out.profile = head_polar_function(m.head.profile);
   out.curvature = sample_curvature(out.profile, 360);
+  out.measures_of_design = polar_head_measures(out.profile);
   analyse_head(out, load, design.poisson);
   m.stresses = head_stress_summary("minimum-stress head", out.profile, load);
   m.same_depth = standard_heads_of_depth(depth, load);

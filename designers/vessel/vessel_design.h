@@ -14,8 +14,10 @@
 #include "designers/vessel/edge_bending.h"
 #include "designers/vessel/exact_head.h"
 #include "designers/vessel/head_depth_comparison.h"
+#include "designers/vessel/head_measures.h"
 #include "designers/vessel/head_preset.h"
 #include "designers/vessel/membrane_stress.h"
+#include "designers/vessel/smoothing_choice.h"
 #include "designers/vessel/stress_optimal_head.h"
 #include "designers/vessel/vessel_code_check.h"
 
@@ -49,6 +51,8 @@ struct VesselDesign {
   // curvature at the junctions, 1/mm (absent: free; 0: curvature-continuous with the cylinder).
   // curvature: the depth, when given, is imposed as R(π/2) = depth.
   std::optional<double> depth;
+  // curvature: the volume the head encloses with its junction plane, mm³ (head_volume.h).
+  std::optional<double> volume;
   std::optional<double> junction_kappa;
   std::optional<CodeInputs> code;  // check the wall by ASME VIII-1 (vessel_code_check.h)
   double density = 7850.0;         // kg/m³ of the wall material (steel), for the weight
@@ -81,6 +85,10 @@ struct MinimumStressDesign {
 
 struct VesselSolution {
   SynthesisResult synthesis;       // empty for an exact or minimum-stress head
+  SmoothingChoice smoothing;       // how the synthesis's λ was chosen
+  int placement_rounds = 0;        // syntheses run to place targets given by s or φ (else 1)
+  std::optional<HeadMeasures> measures_of_design;  // a curvature or minimum-stress head's
+                                                   // volume and inner area (head_volume.h)
   std::optional<ExactHead> exact;  // the exact head (HeadDesign::exact)
   std::optional<MinimumStressDesign> minimum_stress;  // HeadDesign::minimum_stress
   // R(θ) on [0, π] for the converter: exact = synthesis.profile; π/2 is a breakpoint so that the

@@ -43,8 +43,26 @@ class Reader {
 
 CurvatureEntry read_curvature(const XmlElementReader& r) {
   CurvatureEntry c;
-  c.theta_deg = r.number("theta");
-  if (!(c.theta_deg >= 0.0 && c.theta_deg <= 180.0)) r.fail("theta", "an angle in [0, 180] degrees");
+  const int places = r.has("theta") + r.has("s") + r.has("phi");
+  if (places != 1)
+    r.fail(places == 0    ? "theta"
+           : r.has("phi") ? "phi"
+                          : "s",
+           "exactly one of theta (polar angle, degrees), s (arc length from junction A, mm) and "
+           "phi (meridian angle, degrees)");
+  if (r.has("s")) {
+    c.place = TargetPlace::arc_length;
+    c.position = r.positive("s", 0.0, true);
+  } else if (r.has("phi")) {
+    c.place = TargetPlace::meridian_angle;
+    c.position = r.number("phi");
+    if (!(c.position >= -90.0 && c.position <= 90.0))
+      r.fail("phi", "a meridian angle in [-90, 90] degrees (90 at junction A, 0 at the apex)");
+  } else {
+    c.theta_deg = r.number("theta");
+    if (!(c.theta_deg >= 0.0 && c.theta_deg <= 180.0))
+      r.fail("theta", "an angle in [0, 180] degrees");
+  }
   if (r.has("kappa") && r.has("radius")) r.fail("radius", "either kappa or radius, not both");
   c.is_radius = r.has("radius");
   c.value = r.number(c.is_radius ? "radius" : "kappa");
@@ -88,6 +106,7 @@ void read_head(const XmlElementReader& r, VesselDesign& d, bool curvature_inputs
     r.fail("design",
            "design=\"curvature\" with <curvature> targets (an " + design + " head takes none)");
   if (d.head_design == HeadDesign::minimum_stress) {
+    if (r.has("volume")) r.fail("volume", "no volume unless design=\"curvature\"");
     if (r.has("depth")) d.depth = r.positive("depth");
     if (d.depth && !(*d.depth <= 4 * d.radius))
       r.fail("depth", "a head depth up to 4 × the vessel radius " + number(4 * d.radius) + " mm");
@@ -104,8 +123,10 @@ void read_head(const XmlElementReader& r, VesselDesign& d, bool curvature_inputs
     if (r.has("depth")) d.depth = r.positive("depth");
     if (d.depth && !(*d.depth <= 4 * d.radius))
       r.fail("depth", "a head depth up to 4 × the vessel radius " + number(4 * d.radius) + " mm");
-    if (!r.has("preset") && d.depth) return;
+    if (r.has("volume")) d.volume = r.positive("volume");
+    if (!r.has("preset") && (d.depth || d.volume)) return;
   } else {
+    if (r.has("volume")) r.fail("volume", "no volume unless design=\"curvature\"");
     for (const char* name : {"depth", "junction-kappa"})
       if (r.has(name))
         r.fail(name,
@@ -151,8 +172,9 @@ CodeInputs read_code(const XmlElementReader& r) {
   return c;
 }
 
-SynthesisSettings read_synthesis(const XmlElementReader& r) {
-  SynthesisSettings s;
+// smoothing="λ" fixes the weight; "auto" (the default) or kappa-tolerance="1/mm" let the design
+// choose it (smoothing_choice.h).
+SynthesisSettings read_synthesis(const XmlElementReader& r, SynthesisSettings s) {
   s.degree = r.integer("degree", s.degree);
   if (s.degree < 3 || s.degree > kMaxDegree)
     r.fail("degree", "an integer in [3, " + std::to_string(kMaxDegree) + "]");
@@ -160,7 +182,17 @@ SynthesisSettings read_synthesis(const XmlElementReader& r) {
   if (s.ordinates < s.degree + 1 || s.ordinates > kMaxOrdinates)
     r.fail("ordinates", "an integer in [degree + 1 = " + std::to_string(s.degree + 1) + ", " +
                             std::to_string(kMaxOrdinates) + "]");
-  s.smoothing = r.positive("smoothing", s.smoothing, true);
+  if (r.has("smoothing") && r.text("smoothing", "") != "auto") {
+    s.smoothing = r.positive("smoothing", s.smoothing, true);
+    s.smoothing_rule = SmoothingRule::fixed;
+    if (r.has("kappa-tolerance"))
+      r.fail("kappa-tolerance",
+             "no kappa-tolerance with a fixed smoothing (use smoothing=\"auto\")");
+  }
+  if (r.has("kappa-tolerance")) {
+    s.kappa_tolerance = r.positive("kappa-tolerance");
+    s.smoothing_rule = SmoothingRule::tolerance;
+  }
   s.symmetric = r.choice("symmetric", {"true", "false"}, s.symmetric ? "true" : "false") == "true";
   s.max_iterations = r.integer("max-iterations", s.max_iterations);
   if (s.max_iterations < 1 || s.max_iterations > kMaxSynthesisIterations)
@@ -173,7 +205,12 @@ void to_millimetres(VesselProject& p, double unit) {
   VesselDesign& d = p.design;
   for (double* length : {&d.radius, &d.length, &d.thickness}) *length *= unit;
   if (d.code) d.code->corrosion_allowance *= unit;
-  for (CurvatureEntry& c : p.curvatures) c.value = c.is_radius ? c.value * unit : c.value / unit;
+  for (CurvatureEntry& c : p.curvatures) {
+    c.value = c.is_radius ? c.value * unit : c.value / unit;
+    if (c.place == TargetPlace::arc_length) c.position *= unit;
+  }
+  d.synthesis.kappa_tolerance /= unit;
+  if (d.volume) *d.volume *= unit * unit * unit;
   for (std::optional<EndCondition>* end : {&d.end_a, &d.end_b})
     if (*end)
       for (std::optional<double>* v : {&(*end)->r, &(*end)->dr, &(*end)->ddr})
@@ -214,6 +251,7 @@ double read_vessel(const XMLElement* e, const XmlElementReader* root, Reader& re
     d.density = r.positive("density", d.density);
     d.poisson = r.positive("poisson", d.poisson, true);
     if (!(d.poisson < 0.5)) r.fail("poisson", "a Poisson's ratio in [0, 0.5)");
+    d.synthesis.smoothing_rule = SmoothingRule::shape_preserving;
     const std::vector<const XMLElement*> curvatures = r.children("curvature");
     if (curvatures.size() > kMaxCurvatureTargets)
       throw InputError(r.where() + ": " + std::to_string(curvatures.size()) +
@@ -246,7 +284,7 @@ double read_vessel(const XMLElement* e, const XmlElementReader* root, Reader& re
       reader.visit(s, [&](const XmlElementReader& sr) {
         if (s != settings.front())
           throw InputError(sr.where() + ": expected one <synthesis> per vessel");
-        d.synthesis = read_synthesis(sr);
+        d.synthesis = read_synthesis(sr, d.synthesis);
       });
     if (p.curvatures.empty() && !d.preset && d.head_design != HeadDesign::minimum_stress)
       throw InputError(r.where() + ": expected <curvature> elements or a <head preset>");
@@ -298,7 +336,8 @@ VesselDesign to_design(const VesselProject& project) {
   d.targets.clear();
   for (const CurvatureEntry& c : project.curvatures)
     d.targets.push_back(
-        {c.theta_deg * kRadiansPerDegree, c.is_radius ? 1.0 / c.value : c.value, c.weight});
+        {c.theta_deg * kRadiansPerDegree, c.is_radius ? 1.0 / c.value : c.value, c.weight, c.place,
+         c.place == TargetPlace::meridian_angle ? c.position * kRadiansPerDegree : c.position});
   return d;
 }
 
@@ -332,7 +371,9 @@ std::string vessel_project_xml(const VesselProject& p) {
   }
   for (const CurvatureEntry& c : p.curvatures) {
     out << "    <curvature";
-    attribute(out, "theta", c.theta_deg);
+    if (c.place == TargetPlace::polar_angle) attribute(out, "theta", c.theta_deg);
+    if (c.place == TargetPlace::arc_length) attribute(out, "s", c.position);
+    if (c.place == TargetPlace::meridian_angle) attribute(out, "phi", c.position);
     attribute(out, c.is_radius ? "radius" : "kappa", c.value);
     attribute(out, "weight", c.weight);
     out << "/>\n";
@@ -346,7 +387,7 @@ std::string vessel_project_xml(const VesselProject& p) {
     if ((*end)->ddr) attribute(out, "ddr", *(*end)->ddr);
     out << "/>\n";
   }
-  if (d.preset || d.depth || d.head_design == HeadDesign::minimum_stress) {
+  if (d.preset || d.depth || d.volume || d.head_design == HeadDesign::minimum_stress) {
     out << "    <head";
     if (d.preset) attribute(out, "preset", std::string(head_kind_name(d.preset->kind)));
     attribute(out, "design", std::string(head_design_name(d.head_design)));
@@ -362,6 +403,7 @@ std::string vessel_project_xml(const VesselProject& p) {
     }
     if (d.preset) attribute(out, "targets", std::to_string(d.preset_targets));
     if (d.depth) attribute(out, "depth", *d.depth);
+    if (d.volume) attribute(out, "volume", *d.volume);
     if (d.junction_kappa) attribute(out, "junction-kappa", *d.junction_kappa);
     out << "/>\n";
   }
@@ -369,7 +411,12 @@ std::string vessel_project_xml(const VesselProject& p) {
   out << "    <synthesis";
   attribute(out, "degree", std::to_string(s.degree));
   attribute(out, "ordinates", std::to_string(s.ordinates));
-  attribute(out, "smoothing", s.smoothing);
+  if (s.smoothing_rule == SmoothingRule::fixed)
+    attribute(out, "smoothing", s.smoothing);
+  else
+    attribute(out, "smoothing", std::string("auto"));
+  if (s.smoothing_rule == SmoothingRule::tolerance)
+    attribute(out, "kappa-tolerance", s.kappa_tolerance);
   attribute(out, "symmetric", std::string(s.symmetric ? "true" : "false"));
   attribute(out, "max-iterations", std::to_string(s.max_iterations));
   out << "/>\n  </vessel>\n  <conversion";

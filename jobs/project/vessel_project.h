@@ -19,6 +19,10 @@ struct CurvatureEntry {
   double value = 0.0;
   bool is_radius = false;  // value is a radius of curvature (κ = 1/value)
   double weight = 1.0;
+  // Where: theta="deg" (polar angle), s="mm" (arc length from junction A) or phi="deg" (meridian
+  // angle of the normal against the axis); position holds s or φ.
+  TargetPlace place = TargetPlace::polar_angle;
+  double position = 0.0;
 
   bool operator==(const CurvatureEntry&) const = default;
 };

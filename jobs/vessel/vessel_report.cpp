@@ -12,6 +12,7 @@ namespace polarform {
 // "mm", "mm/rad" or "mm/rad^2" for a condition named "R(0)", "R'(π)", "R''(0)", …
 std::string condition_unit(const std::string& name) {
   const auto order = std::count(name.begin(), name.end(), '\'');
+  if (name == "V") return "mm^3";
   return order == 0 ? "mm" : order == 1 ? "mm/rad" : "mm/rad^2";
 }
 
@@ -89,6 +90,13 @@ json preset_json(const VesselSolveStage& r) {
   return j;
 }
 
+// "theta", "s", "phi": the project attribute a target's place is given by.
+const char* target_place_name(TargetPlace place) {
+  return place == TargetPlace::arc_length       ? "s"
+         : place == TargetPlace::meridian_angle ? "phi"
+                                                : "theta";
+}
+
 json synthesis_json(const VesselSolveStage& r) {
   const SynthesisResult& s = r.solution.synthesis;
   const SynthesisSettings& set = r.design.synthesis;
@@ -97,9 +105,20 @@ json synthesis_json(const VesselSolveStage& r) {
     max_residual = std::max(max_residual, std::abs(t.residual()));
     sum_squares += t.residual() * t.residual();
   }
+  const SmoothingChoice& c = r.solution.smoothing;
   return {{"degree", set.degree},
           {"ordinates", set.ordinates},
-          {"smoothing", set.smoothing},
+          {"smoothing", s.smoothing},
+          {"smoothing_choice",
+           {{"rule", smoothing_rule_name(c.rule)},
+            {"lambda", c.lambda},
+            {"trials", c.trials},
+            {"met", c.met},
+            {"kappa_tolerance_per_mm",
+             c.rule == SmoothingRule::tolerance ? json(set.kappa_tolerance) : json(nullptr)},
+            {"target_turning_points", c.target_turning_points},
+            {"turning_points", c.turning_points}}},
+          {"placement_rounds", r.solution.placement_rounds},
           {"symmetric", set.symmetric},
           {"unknowns", s.unknowns},
           {"free_parameters", s.free_parameters},
@@ -214,11 +233,16 @@ json vessel_report_fields(const VesselSolveStage& r, const VesselConversionStage
       s.minimum_stress ? minimum_stress_json(d, *s.minimum_stress) : json(nullptr);
   j["targets"] = json::array();
   for (const TargetResidual& t : s.synthesis.targets)
-    j["targets"].push_back({{"theta_deg", t.theta * kDegreesPerRadian},
-                            {"target_per_mm", t.target},
-                            {"achieved_per_mm", t.achieved},
-                            {"residual_per_mm", t.residual()},
-                            {"weight", t.weight}});
+    j["targets"].push_back(
+        {{"place", target_place_name(t.place)},
+         {"s_mm", t.place == TargetPlace::arc_length ? json(t.position) : json(nullptr)},
+         {"phi_deg", t.place == TargetPlace::meridian_angle ? json(t.position * kDegreesPerRadian)
+                                                            : json(nullptr)},
+         {"theta_deg", t.theta * kDegreesPerRadian},
+         {"target_per_mm", t.target},
+         {"achieved_per_mm", t.achieved},
+         {"residual_per_mm", t.residual()},
+         {"weight", t.weight}});
   j["conditions"] = json::array();
   for (const ConditionViolation& v : s.synthesis.conditions)
     j["conditions"].push_back({{"name", v.name},
@@ -256,6 +280,10 @@ json vessel_report_fields(const VesselSolveStage& r, const VesselConversionStage
   j["edge_bending"] = edge_bending_json(s.edge_bending);
   j["code"] = s.code ? code_json(d, *s.code) : json(nullptr);
   j["measures"] = s.measures ? measures_json(*s.measures) : json(nullptr);
+  j["design_measures"] = s.measures_of_design
+                             ? json{{"head_volume_mm3", s.measures_of_design->volume},
+                                    {"head_area_mm2", s.measures_of_design->area}}
+                             : json(nullptr);
   j["preset"] = s.preset ? preset_json(r) : json(nullptr);
   j["warnings"] = s.warnings;
   return j;

@@ -69,6 +69,11 @@ void run(const VesselArgs& a) {
         "max condition violation %.3g\n",
         s.targets.size(), s.iterations, s.termination.c_str(),
         report["synthesis"]["max_abs_residual_per_mm"].get<double>(), s.max_violation);
+    const SmoothingChoice& choice = solution.smoothing;
+    if (choice.rule != SmoothingRule::fixed)
+      std::printf("smoothing: %s, lambda %.3g chosen in %d trials%s\n",
+                  smoothing_rule_name(choice.rule), choice.lambda, choice.trials,
+                  choice.met ? "" : " (no weight met the rule; the closest is used)");
   }
   std::printf("head depth %.3f mm; NURBS profile: %d arcs, degree %d, %d control points\n",
               solution.depth, c.arcs, c.profile.degree(), c.profile.size());

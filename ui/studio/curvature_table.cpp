@@ -3,11 +3,37 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <array>
 #include <string>
 
 #include "ui/studio/widgets.h"
 
 namespace polarform::studio {
+
+// Where a target is: θ [°], s [mm] or φ [°], chosen in a combo beside its value.
+bool CurvatureTable::draw_place(CurvatureEntry& e) {
+  static constexpr std::array<std::string_view, 3> kPlaces = {"θ [°]", "s [mm]", "φ [°]"};
+  static constexpr std::array<TargetPlace, 3> kValues = {
+      TargetPlace::polar_angle, TargetPlace::arc_length, TargetPlace::meridian_angle};
+  int place =
+      static_cast<int>(std::find(kValues.begin(), kValues.end(), e.place) - kValues.begin());
+  bool changed = false;
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 4.5f);
+  if (combo("##place", place, kPlaces)) {
+    e.place = kValues[place];
+    e.position = e.place == TargetPlace::meridian_angle ? 90.0 - e.theta_deg : 0.0;
+    changed = true;
+  }
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(-FLT_MIN);
+  if (e.place == TargetPlace::polar_angle)
+    changed |= drag_number("##theta", e.theta_deg, 0.25, 0.0, 180.0, "%.2f");
+  else if (e.place == TargetPlace::arc_length)
+    changed |= drag_number("##s", e.position, 1.0, 0.0, 1e7, "%.1f");
+  else
+    changed |= drag_number("##phi", e.position, 0.25, -90.0, 90.0, "%.2f");
+  return changed;
+}
 
 bool CurvatureTable::draw(std::vector<CurvatureEntry>& entries) {
   bool changed = false;
@@ -18,7 +44,7 @@ bool CurvatureTable::draw(std::vector<CurvatureEntry>& entries) {
   if (ImGui::BeginTable("curvatures", 5, flags, ImVec2(0, height))) {
     ImGui::TableSetupScrollFreeze(0, 1);
     ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_WidthFixed);
-    ImGui::TableSetupColumn("θ [°]");
+    ImGui::TableSetupColumn("at");
     ImGui::TableSetupColumn("given as");
     ImGui::TableSetupColumn("value");
     ImGui::TableSetupColumn("weight");
@@ -33,8 +59,7 @@ bool CurvatureTable::draw(std::vector<CurvatureEntry>& entries) {
               ImGuiSelectableFlags_SpanAllColumns | ImGuiSelectableFlags_AllowItemOverlap))
         selected_ = i;
       ImGui::TableNextColumn();
-      ImGui::SetNextItemWidth(-FLT_MIN);
-      changed |= drag_number("##theta", e.theta_deg, 0.25, 0.0, 180.0, "%.2f");
+      changed |= draw_place(e);
       ImGui::TableNextColumn();
       ImGui::SetNextItemWidth(-FLT_MIN);
       int kind = e.is_radius ? 1 : 0;
@@ -84,8 +109,10 @@ bool CurvatureTable::draw(std::vector<CurvatureEntry>& entries) {
     changed = true;
   }
   help_marker(
-      "Prescribed curvatures of the head meridian at polar angles θ (0° junction A, 90° apex, 180° "
-      "junction B). With no targets, the preset's curvature is sampled instead.");
+      "Prescribed curvatures of the head meridian, each at a polar angle θ (0° junction A, 90° "
+      "apex, 180° junction B), an arc length s from junction A, or a meridian angle φ of the "
+      "normal against the axis (90° at junction A, 0° at the apex, -90° at junction B). With no "
+      "targets, the preset's curvature is sampled instead.");
   return changed;
 }
 

@@ -14,6 +14,7 @@ class CurvatureTable {
   bool draw(std::vector<CurvatureEntry>& entries);
 
  private:
+  bool draw_place(CurvatureEntry& e);
   int selected_ = -1;
 };
 

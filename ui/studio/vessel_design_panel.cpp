@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <numbers>
 #include <string_view>
 
@@ -134,6 +135,16 @@ bool VesselDesignPanel::draw_design(VesselDesign& d) {
       "synthesised from curvature targets under the end conditions. minimum-stress: the head of "
       "the depth below (or the preset's) with the smallest peak membrane stress, compared with "
       "the standard heads of that depth.");
+  if (d.head_design == HeadDesign::curvature) {
+    changed |= optional_value("depth R(90°) [mm]", d.depth, d.radius / 2);
+    help_marker("Checked: the synthesis holds the head's depth R(90°) to this.");
+    // The 2:1 ellipsoidal head's (2/3)π a²(a/2) as the first value offered.
+    changed |=
+        optional_value("volume [mm³]", d.volume, std::numbers::pi / 3 * std::pow(d.radius, 3));
+    help_marker(
+        "Checked: the synthesis holds the volume the head encloses with its junction plane to "
+        "this, (2π/3)∫R³cosθ dθ over 0..90° (a cubic equality constraint).");
+  }
   if (d.head_design != HeadDesign::minimum_stress) return changed;
   const double preset_depth = d.preset ? head_shape(*d.preset, d.radius).depth : d.radius / 2;
   changed |= optional_value("depth [mm]", d.depth, preset_depth);
@@ -172,7 +183,26 @@ bool VesselDesignPanel::draw_synthesis(SynthesisSettings& s) {
   bool changed = false;
   changed |= input_int("degree", s.degree, 3, 9);
   changed |= input_int("ordinates", s.ordinates, 4, 200);
-  changed |= log_slider("smoothing λ", s.smoothing, 1e-12, 1e2, "%.2g");
+  static constexpr std::array<std::string_view, 3> kRules = {"auto (shape-preserving)", "tolerance",
+                                                             "fixed"};
+  static constexpr std::array<SmoothingRule, 3> kRuleValues = {
+      SmoothingRule::shape_preserving, SmoothingRule::tolerance, SmoothingRule::fixed};
+  int rule = static_cast<int>(std::find(kRuleValues.begin(), kRuleValues.end(), s.smoothing_rule) -
+                              kRuleValues.begin());
+  if (combo("smoothing", rule, kRules)) {
+    s.smoothing_rule = kRuleValues[rule];
+    if (s.smoothing_rule == SmoothingRule::tolerance && !(s.kappa_tolerance > 0.0))
+      s.kappa_tolerance = 1e-5;
+    changed = true;
+  }
+  help_marker(
+      "auto: the closest fit whose curvature has no turning point or inflection the targets lack. "
+      "tolerance: the smoothest head that meets every target within the κ tolerance. fixed: the "
+      "weight λ below.");
+  if (s.smoothing_rule == SmoothingRule::fixed)
+    changed |= log_slider("smoothing λ", s.smoothing, 1e-12, 1e2, "%.2g");
+  if (s.smoothing_rule == SmoothingRule::tolerance)
+    changed |= log_slider("κ tolerance [1/mm]", s.kappa_tolerance, 1e-9, 1e-2, "%.2g");
   changed |= ImGui::Checkbox("symmetric about 90°", &s.symmetric);
   changed |= input_int("max iterations", s.max_iterations, 10, 100000);
   return changed;

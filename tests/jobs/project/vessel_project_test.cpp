@@ -117,6 +117,56 @@ TEST(VesselProject, CurvatureHeadOfAGivenDepth) {
             "design=\"minimum-stress\" or \"curvature\", got '200'");
 }
 
+// Targets by arc length or meridian angle, a volume, and the smoothing rules: read, carried into
+// the design (φ in radians), saved and loaded exactly, and their errors named.
+TEST(VesselProject, TargetPlacesVolumeAndSmoothingRules) {
+  std::vector<std::string> warnings;
+  const VesselProject p =
+      parse_vessel_project(vessel(kVessel,
+                                  "<curvature s=\"120\" kappa=\"0.003\"/>\n"
+                                  "<curvature phi=\"30\" radius=\"600\" weight=\"2\"/>\n"
+                                  "<curvature theta=\"90\" radius=\"700\"/>\n"
+                                  "<head design=\"curvature\" volume=\"1.2e8\"/>\n"
+                                  "<synthesis smoothing=\"auto\" kappa-tolerance=\"2e-5\"/>\n"),
+                           "t.xml", warnings);
+  ASSERT_EQ(p.curvatures.size(), 3u);
+  EXPECT_EQ(p.curvatures[0].place, TargetPlace::arc_length);
+  EXPECT_EQ(p.curvatures[0].position, 120.0);
+  EXPECT_EQ(p.curvatures[1].place, TargetPlace::meridian_angle);
+  EXPECT_EQ(p.design.volume, 1.2e8);
+  EXPECT_FALSE(p.design.preset);
+  EXPECT_EQ(p.design.synthesis.smoothing_rule, SmoothingRule::tolerance);
+  EXPECT_EQ(p.design.synthesis.kappa_tolerance, 2e-5);
+  const VesselDesign d = to_design(p);
+  EXPECT_EQ(d.targets[0].place, TargetPlace::arc_length);
+  EXPECT_DOUBLE_EQ(d.targets[1].position, kPi / 6);
+  EXPECT_DOUBLE_EQ(d.targets[1].kappa, 1 / 600.0);
+  EXPECT_EQ(d.targets[2].place, TargetPlace::polar_angle);
+  EXPECT_EQ(parse_vessel_project(vessel_project_xml(p), "mem.xml", warnings), p);
+  const VesselProject fixed = parse_vessel_project(
+      vessel(kVessel, "<curvature s=\"0\" kappa=\"0.002\"/>\n<synthesis smoothing=\"1e-5\"/>\n"),
+      "t.xml", warnings);
+  EXPECT_EQ(fixed.design.synthesis.smoothing_rule, SmoothingRule::fixed);
+  EXPECT_EQ(fixed.design.synthesis.smoothing, 1e-5);
+  EXPECT_EQ(parse_vessel_project(vessel_project_xml(fixed), "mem.xml", warnings), fixed);
+  EXPECT_TRUE(warnings.empty());
+  EXPECT_EQ(error_of(vessel(kVessel, "<curvature theta=\"20\" s=\"40\" kappa=\"0.002\"/>\n")),
+            "t.xml:3: <curvature> attribute 's': expected exactly one of theta (polar angle, "
+            "degrees), s (arc length from junction A, mm) and phi (meridian angle, degrees), got "
+            "'40'");
+  EXPECT_EQ(error_of(vessel(kVessel, "<curvature phi=\"95\" kappa=\"0.002\"/>\n")),
+            "t.xml:3: <curvature> attribute 'phi': expected a meridian angle in [-90, 90] degrees "
+            "(90 at junction A, 0 at the apex), got '95'");
+  EXPECT_EQ(error_of(vessel(kVessel,
+                            "<curvature s=\"20\" kappa=\"0.002\"/>\n"
+                            "<synthesis smoothing=\"1e-6\" kappa-tolerance=\"1e-5\"/>\n")),
+            "t.xml:4: <synthesis> attribute 'kappa-tolerance': expected no kappa-tolerance with a "
+            "fixed smoothing (use smoothing=\"auto\"), got '1e-5'");
+  EXPECT_EQ(error_of(vessel(kVessel, "<head preset=\"ellipsoidal\" volume=\"1e8\"/>\n")),
+            "t.xml:3: <head> attribute 'volume': expected no volume unless "
+            "design=\"curvature\", got '1e8'");
+}
+
 TEST(VesselProject, ToDesignConvertsUnits) {
   const VesselDesign d = to_design(odd_project());
   ASSERT_EQ(d.targets.size(), 4u);
@@ -134,7 +184,10 @@ TEST(VesselProject, BareVesselRootAndDefaults) {
       "<vessel " + kVessel + "><head preset=\"hemispherical\"/></vessel>", "t.xml", warnings);
   EXPECT_TRUE(warnings.empty());
   EXPECT_EQ(p.design.preset, HeadPreset{});
-  EXPECT_EQ(p.design.synthesis, SynthesisSettings{});
+  // A project's synthesis chooses its smoothing unless the file fixes it (smoothing_choice.h).
+  SynthesisSettings defaults;
+  defaults.smoothing_rule = SmoothingRule::shape_preserving;
+  EXPECT_EQ(p.design.synthesis, defaults);
   EXPECT_FALSE(p.design.end_a);
   EXPECT_EQ(p.tolerance, 1e-3);
   EXPECT_EQ(p.design.preset_targets, 48);
