@@ -99,6 +99,16 @@ HeadMeasures conical_head_measures(double radius, double half_angle, double knuc
           zone.area + kPi * x * x / std::sin(half_angle)};
 }
 
+// The knuckle zone over φ = 90° (its normal turns from radial to axial) and the plate's disc of
+// radius R − r above it: V = π c² r + π² c r²/2 + 2π r³/3, A = π² r c + 2π r² + π c² (c = R − r).
+HeadMeasures flat_head_measures(double radius, double knuckle) {
+  require_positive(radius, "radius R", "mm");
+  const ConeGeometry g = flat_head_geometry(radius, knuckle);
+  const double c = g.knuckle_centre_x;
+  const HeadMeasures zone = knuckle_zone(c, knuckle, kPi / 2);
+  return {zone.volume, zone.area + kPi * c * c};
+}
+
 HeadMeasures cylinder_measures(double radius, double length) {
   require_positive(radius, "radius R", "mm");
   require_positive(length, "length", "mm");
@@ -116,6 +126,8 @@ HeadMeasures head_measures(const HeadPreset& preset, double radius) {
       return torispherical_head_measures(radius, preset.crown, preset.knuckle);
     case HeadKind::conical:
       return conical_head_measures(radius, preset.half_angle, preset.knuckle);
+    case HeadKind::flat:
+      return flat_head_measures(radius, preset.knuckle);
   }
   return {};
 }
@@ -161,6 +173,12 @@ double conical_metal_volume(double radius, double half_angle, double knuckle, do
   return conical_head_measures(radius + t, a, knuckle + t).volume - inside - tip;
 }
 
+double flat_metal_volume(double radius, double knuckle, double thickness) {
+  require_positive(thickness, "thickness t", "mm");
+  const double inside = flat_head_measures(radius, knuckle).volume;
+  return flat_head_measures(radius + thickness, knuckle + thickness).volume - inside;
+}
+
 double cylinder_metal_volume(double radius, double length, double thickness) {
   require_positive(thickness, "thickness t", "mm");
   const double inside = cylinder_measures(radius, length).volume;
@@ -178,6 +196,8 @@ double head_metal_volume(const HeadPreset& preset, double radius, double thickne
       return torispherical_metal_volume(radius, preset.crown, preset.knuckle, thickness);
     case HeadKind::conical:
       return conical_metal_volume(radius, preset.half_angle, preset.knuckle, thickness);
+    case HeadKind::flat:
+      return flat_metal_volume(radius, preset.knuckle, thickness);
   }
   return 0.0;
 }

@@ -30,6 +30,9 @@ HeadMeasures torispherical_head_measures(double radius, double crown, double knu
 // Conical head of vessel radius R, half apex angle α (0 < α < 90°) and knuckle radius r
 // (0 <= r < R): the knuckle's torus zone plus the cone to the apex (cone_geometry).
 HeadMeasures conical_head_measures(double radius, double half_angle, double knuckle);
+// Flanged flat head of vessel radius R and knuckle radius r (0 < r < R): the knuckle's torus zone
+// over 90° plus the plate's disc of radius R − r at the height r.
+HeadMeasures flat_head_measures(double radius, double knuckle);
 // h = L − √((L − r)² − (R − r)²), the apex's height above the junction plane.
 double torispherical_depth(double radius, double crown, double knuckle);
 
@@ -51,6 +54,8 @@ double torispherical_metal_volume(double radius, double crown, double knuckle, d
 // The conical head's outer surface is the same shape on R + t, r + t but for the apex, where it
 // is a sphere of radius t: the sharp tip beyond it is subtracted.
 double conical_metal_volume(double radius, double half_angle, double knuckle, double thickness);
+// The flat head's outer surface is the same shape on R + t, r + t.
+double flat_metal_volume(double radius, double knuckle, double thickness);
 double cylinder_metal_volume(double radius, double length, double thickness);
 double head_metal_volume(const HeadPreset& preset, double radius, double thickness);
 

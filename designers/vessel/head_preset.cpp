@@ -62,6 +62,8 @@ const char* head_kind_name(HeadKind kind) {
     case HeadKind::torispherical: return "torispherical";
     case HeadKind::conical:
       return "conical";
+    case HeadKind::flat:
+      return "flat";
   }
   return "";
 }
@@ -85,6 +87,22 @@ HeadPreset torispherical_of_depth(double radius, double depth, double knuckle) {
           knuckle};
 }
 
+namespace {
+
+// The knuckle about (R − r, 0) turned by α, then a straight line to the axis (α = 90°: exactly
+// the plate z = r, which cos/sin of π/2 would leave 1e-17 off).
+ConeGeometry knuckled_line(double radius, double half_angle, double knuckle) {
+  ConeGeometry g;
+  g.knuckle_centre_x = radius - knuckle;
+  const bool flat = half_angle == kPi / 2;
+  g.tangent_x = g.knuckle_centre_x + (flat ? 0.0 : knuckle * std::cos(half_angle));
+  g.tangent_z = flat ? knuckle : knuckle * std::sin(half_angle);
+  g.apex_z = flat ? knuckle : g.tangent_z + g.tangent_x / std::tan(half_angle);
+  return g;
+}
+
+}  // namespace
+
 ConeGeometry cone_geometry(double radius, double half_angle, double knuckle) {
   if (!(half_angle > 0.0 && half_angle < kPi / 2))
     throw InputError("head preset: conical half angle " + short_text(half_angle * 180 / kPi) +
@@ -92,12 +110,15 @@ ConeGeometry cone_geometry(double radius, double half_angle, double knuckle) {
   if (!(knuckle >= 0.0 && knuckle < radius))
     throw InputError("head preset: conical knuckle " + to_text(knuckle) +
                      " mm, expected 0 <= knuckle < radius = " + to_text(radius) + " mm");
-  ConeGeometry g;
-  g.knuckle_centre_x = radius - knuckle;
-  g.tangent_x = g.knuckle_centre_x + knuckle * std::cos(half_angle);
-  g.tangent_z = knuckle * std::sin(half_angle);
-  g.apex_z = g.tangent_z + g.tangent_x / std::tan(half_angle);
-  return g;
+  return knuckled_line(radius, half_angle, knuckle);
+}
+
+ConeGeometry flat_head_geometry(double radius, double knuckle) {
+  if (!(knuckle > 0.0 && knuckle < radius))
+    throw InputError("head preset: flat head knuckle " + to_text(knuckle) +
+                     " mm, expected 0 < knuckle < radius = " + to_text(radius) +
+                     " mm (a flat plate without a knuckle has no polar meridian)");
+  return knuckled_line(radius, kPi / 2, knuckle);
 }
 
 HeadShape head_shape(const HeadPreset& preset, double radius) {
@@ -148,14 +169,20 @@ HeadShape head_shape(const HeadPreset& preset, double radius) {
       }));
       break;
     }
-    case HeadKind::conical: {
-      const double alpha = preset.half_angle, rk = preset.knuckle;
-      const ConeGeometry g = cone_geometry(radius, alpha, rk);
+    case HeadKind::conical:
+    case HeadKind::flat: {
+      const bool flat = preset.kind == HeadKind::flat;
+      const double alpha = flat ? kPi / 2 : preset.half_angle, rk = preset.knuckle;
+      const ConeGeometry g =
+          flat ? flat_head_geometry(radius, rk) : cone_geometry(radius, alpha, rk);
       // The cone's line has the outward normal (cos α, sin α) on side A, (−cos α, sin α) on B.
       const double joint = std::atan2(g.tangent_z, g.tangent_x);
-      const double distance = g.tangent_x * std::cos(alpha) + g.tangent_z * std::sin(alpha);
-      shape.name = "conical, half angle " + short_text(alpha * 180 / kPi) + "°" +
-                   (rk > 0.0 ? ", knuckle " + short_text(rk) + " mm" : std::string());
+      const double distance =
+          flat ? rk : g.tangent_x * std::cos(alpha) + g.tangent_z * std::sin(alpha);
+      shape.name = flat ? "flanged flat, knuckle " + short_text(rk) + " mm"
+                        : "conical, half angle " + short_text(alpha * 180 / kPi) + "°" +
+                              (rk > 0.0 ? ", knuckle " + short_text(rk) + " mm" : std::string());
+      if (flat) shape.membrane_end = 0.0;
       const double kx = g.knuckle_centre_x;
       if (rk > 0.0)
         shape.pieces.push_back(piece(0.0, joint, [kx, rk](double t, int d, double* out) {

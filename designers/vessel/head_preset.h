@@ -14,16 +14,18 @@
 
 namespace polarform {
 
-enum class HeadKind { hemispherical, ellipsoidal, torispherical, conical };
+enum class HeadKind { hemispherical, ellipsoidal, torispherical, conical, flat };
 
-// "hemispherical", "ellipsoidal", "torispherical", "conical" (the words of the project file).
+// "hemispherical", "ellipsoidal", "torispherical", "conical", "flat" (the words of the project
+// file).
 const char* head_kind_name(HeadKind kind);
 
 struct HeadPreset {
   HeadKind kind = HeadKind::hemispherical;
   double ratio = 2.0;    // ellipsoidal: cylinder radius / head depth (2 for the 2:1 head)
   double crown = 0.0;    // torispherical: crown (dish) radius, mm
-  double knuckle = 0.0;  // torispherical, conical: knuckle radius, mm (a conical head's may be 0)
+  double knuckle =
+      0.0;  // torispherical, conical, flat: knuckle radius, mm (a conical head's may be 0)
   double half_angle = 0.0;  // conical: half apex angle α between the cone and the axis, rad
 
   bool operator==(const HeadPreset&) const = default;
@@ -50,6 +52,9 @@ struct ConeGeometry {
 };
 // Throws InputError unless 0 < α < 90° and 0 <= r < R.
 ConeGeometry cone_geometry(double radius, double half_angle, double knuckle);
+// The flanged flat head's: the same with α = 90° (the plate at z = r). Throws InputError unless
+// 0 < r < R.
+ConeGeometry flat_head_geometry(double radius, double knuckle);
 
 struct CurvatureJump {
   double theta = 0.0;         // rad
@@ -63,13 +68,18 @@ struct HeadShape {
   PolarFunction profile;  // all pieces as one R(θ); breakpoints at the joints and at π/2 (apex)
   double depth = 0.0;     // R(π/2), mm: the head's height above the junction plane
   std::vector<CurvatureJump> jumps;   // in θ order, junctions included
+  // θ up to which the head is a membrane shell: π/2 but for a flat head, 0: its knuckle turns
+  // into a plate, where r2 = x/n_x grows without bound, and the plate carries the pressure by
+  // bending (flat_plate.h); only the junction's membrane state is reported.
+  double membrane_end = 1.5707963267948966;
 };
 
 // The preset for a cylinder of `radius` (mm). Throws InputError naming the parameter unless
 // radius > 0, ratio > 0 (ellipsoidal), 0 < knuckle < radius <= crown (torispherical: the
 // knuckle leaves the cylinder tangentially and meets a crown centred on the axis) and 0 < α < 90°,
 // 0 <= knuckle < radius (conical; without a knuckle the cone meets the cylinder at a kink, and
-// the apex is a cone point).
+// the apex is a cone point) and 0 < knuckle < radius (flat: the flanged flat head, a knuckle
+// turning by 90° into a flat plate at the height of the knuckle radius — the cone of α = 90°).
 HeadShape head_shape(const HeadPreset& preset, double radius);
 
 // The curvature distribution as `count` >= 1 targets at θ_k = (k + ½)π / count, weight 1.

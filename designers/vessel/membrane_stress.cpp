@@ -50,13 +50,14 @@ double golden_extremum(const std::function<double(double)>& f, double a, double 
 // meridian (where curvature, and with it the hoop stress, jumps: the closed-form extremes of the
 // standard heads), and every interior extremum of either stress located by golden section — so
 // that the profile's extremes are the stresses' own, not a grid's.
-std::vector<double> head_angles(const PolarFunction& head, const VesselLoad& load, int count) {
+std::vector<double> head_angles(const PolarFunction& head, const VesselLoad& load, int count,
+                                double end) {
   std::vector<double> angles;
-  for (int i = 0; i < count; ++i)
-    angles.push_back(i == count - 1 ? kHalfPi : kHalfPi * i / (count - 1));
+  if (end == 0.0) return {0.0};  // the junction only (a flat head)
+  for (int i = 0; i < count; ++i) angles.push_back(i == count - 1 ? end : end * i / (count - 1));
   std::vector<double> joints;
   for (const double b : head.breakpoints)
-    if (b > kJointSide && b < kHalfPi - kJointSide) joints.push_back(b);
+    if (b > kJointSide && b < end - kJointSide) joints.push_back(b);
   for (const double b : joints) {
     angles.push_back(b - kJointSide);
     angles.push_back(b + kJointSide);
@@ -130,10 +131,14 @@ void check_vessel_load(const VesselLoad& load) {
   check_positive(load.pressure, "pressure", "MPa");
 }
 
-StressProfile membrane_stresses(const PolarFunction& head, const VesselLoad& load, int samples) {
+StressProfile membrane_stresses(const PolarFunction& head, const VesselLoad& load, int samples,
+                                double membrane_end) {
   check_vessel_load(load);
   if (samples < 2)
     throw InputError("membrane stresses: " + std::to_string(samples) + " samples, expected >= 2");
+  if (!(membrane_end >= 0.0 && membrane_end <= kHalfPi))
+    throw InputError("membrane stresses: membrane end " + to_text(membrane_end) +
+                     " rad, expected in [0, π/2]");
 
   const auto sample = [&](double s, double theta, double rho, double z, PrincipalRadii radii,
                           bool cylinder) {
@@ -146,7 +151,7 @@ StressProfile membrane_stresses(const PolarFunction& head, const VesselLoad& loa
   out.samples.push_back(sample(-load.length / 2, 0.0, load.radius, -load.length / 2, cylinder, true));
   out.samples.push_back(sample(0.0, 0.0, load.radius, 0.0, cylinder, true));
   double s = 0.0;
-  for (const double theta : head_angles(head, load, samples)) {
+  for (const double theta : head_angles(head, load, samples, membrane_end)) {
     if (out.samples.size() > 2) s += arc_length(head, out.samples.back().theta, theta);
     const double r = head(theta);
     out.samples.push_back(sample(s, theta, r * std::cos(theta), r * std::sin(theta),
@@ -183,7 +188,7 @@ StressProfile membrane_stresses(const PolarFunction& head, const VesselLoad& loa
       ++end;
     }
     band.theta_from = it == head_begin ? 0.0 : root((it - 1)->theta, it->theta);
-    band.theta_to = end == out.samples.end() ? kHalfPi : root((end - 1)->theta, end->theta);
+    band.theta_to = end == out.samples.end() ? membrane_end : root((end - 1)->theta, end->theta);
     band.s_from = it == head_begin ? 0.0
                                    : (it - 1)->s + arc_length(head, (it - 1)->theta, band.theta_from);
     band.s_to = (end - 1)->s + arc_length(head, (end - 1)->theta, band.theta_to);

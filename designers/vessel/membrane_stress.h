@@ -63,14 +63,18 @@ struct CompressiveBand {
 
 struct StressProfile {
   // Two cylinder samples (s = −length/2 and the junction, cylinder side), then the head samples
-  // from θ = 0 (junction, head side) to π/2 (apex), in θ order: `samples` equal steps of θ, both
-  // sides of every joint of the meridian (its breakpoints, where curvature jumps; 1e-10 rad off
-  // the joint) and every interior extremum of N_φ or N_θ located by golden section.
+  // from θ = 0 (junction, head side) to π/2 (apex; a flat head: the junction only), in θ order:
+  // `samples` equal steps of θ, both sides of every joint of the meridian (its breakpoints, where
+  // curvature jumps; 1e-10 rad off the joint) and every interior extremum of N_φ or N_θ located by
+  // golden section.
   std::vector<StressSample> samples;
   std::vector<CompressiveBand> compressive_hoop;
 };
 
-// Throws InputError unless radius, length, thickness and pressure are > 0 and samples >= 2.
-StressProfile membrane_stresses(const PolarFunction& head, const VesselLoad& load, int samples = 181);
+// The head is sampled over [0, membrane_end] (π/2; a flat head's 0: HeadShape::membrane_end).
+// Throws InputError unless radius, length, thickness and pressure are > 0, samples >= 2 and
+// 0 <= membrane_end <= π/2.
+StressProfile membrane_stresses(const PolarFunction& head, const VesselLoad& load,
+                                int samples = 181, double membrane_end = 1.5707963267948966);
 
 }  // namespace polarform

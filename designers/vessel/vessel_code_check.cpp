@@ -19,6 +19,8 @@ PressurePart code_part(const HeadPreset& h, double radius) {
       return TorisphericalHead{2 * radius, h.crown, h.knuckle};
     case HeadKind::conical:
       return ConicalHead{2 * radius, h.half_angle, h.knuckle};
+    case HeadKind::flat:
+      break;  // not a UG-32 head (check_vessel_code)
   }
   return HemisphericalHead{radius};
 }
@@ -38,7 +40,11 @@ VesselCodeCheck check_vessel_code(const CodeInputs& code, double radius, double 
   out.shell = check_internal_pressure(d);
   out.mawp = out.shell.mawp;
   double required = out.shell.required_thickness;
-  if (exact_head) {
+  if (exact_head && exact_head->kind == HeadKind::flat) {
+    out.head_note =
+        "a flat head is not a UG-32 head: its thickness is ruled by UG-34 (factor C and diameter d "
+        "by the attachment sketch), which is not computed here";
+  } else if (exact_head) {
     d.part = code_part(*exact_head, radius);
     out.head = check_internal_pressure(d);
     out.mawp = std::min(out.mawp, out.head->mawp);

@@ -60,7 +60,7 @@ PresetComparison compare_with_preset(const HeadPreset& preset, const VesselDesig
     const double deviation = std::abs(head(theta) - out.shape.profile(theta));
     if (deviation > out.max_deviation) out.max_deviation = deviation, out.deviation_angle = theta;
   }
-  out.stresses = membrane_stresses(out.shape.profile, load);
+  out.stresses = membrane_stresses(out.shape.profile, load, 181, out.shape.membrane_end);
   return out;
 }
 
@@ -102,6 +102,14 @@ std::vector<std::string> warnings_for(const VesselSolution& s, const VesselDesig
       out.push_back("the head's largest hoop stress " + short_text(design) +
                     " MPa exceeds the preset's " + short_text(preset) + " MPa");
   }
+  if (s.flat_plate)
+    out.push_back(
+        "membrane theory carries neither the knuckle's turn into the flat plate nor the "
+        "plate (radius " +
+        short_text(s.flat_plate->plate_radius) + " mm): its bending stress is " +
+        short_text(s.flat_plate->clamped_edge) + " MPa at the edge if clamped, " +
+        short_text(s.flat_plate->simply_supported_centre) +
+        " MPa at the centre if simply supported (report.json flat_plate)");
   for (const CompressiveBand& band : s.stresses.compressive_hoop)
     out.push_back("compressive hoop stress down to " + short_text(band.min_hoop_stress) +
                   " MPa for θ from " + degrees(band.theta_from) + " to " + degrees(band.theta_to) +
@@ -120,7 +128,12 @@ void analyse_head(VesselSolution& out, const VesselLoad& load, double poisson) {
   out.junction_curvature = polar_curvature(a[0], a[1], a[2]);
   out.junction_slope = std::atan2(a[1], a[0]);
   out.apex_slope = std::atan2(apex[1], apex[0]);
-  out.stresses = membrane_stresses(out.profile, load);
+  const double membrane_end = out.exact ? out.exact->shape.membrane_end : kPi / 2;
+  out.stresses = membrane_stresses(out.profile, load, 181, membrane_end);
+  if (out.exact && out.exact->shape.membrane_end < kPi / 2) {   // a flat head: its plate
+    const double plate = load.radius - out.exact->shape.depth;  // R − r: the depth is r
+    out.flat_plate = flat_plate_bending(plate, load.thickness, load.pressure, poisson);
+  }
   HeadShape smooth;
   if (!out.exact) {
     smooth.pieces = {out.profile};

@@ -13,6 +13,7 @@
 #include "designers/vessel/curvature_synthesis.h"
 #include "designers/vessel/edge_bending.h"
 #include "designers/vessel/exact_head.h"
+#include "designers/vessel/flat_plate.h"
 #include "designers/vessel/head_depth_comparison.h"
 #include "designers/vessel/head_measures.h"
 #include "designers/vessel/head_preset.h"
@@ -106,6 +107,8 @@ struct VesselSolution {
   // At the head's curvature jumps on the A half by edge theory: an exact head's junction and
   // knuckle joints, another head's junction (edge_bending.h).
   std::vector<EdgeBending> edge_bending;
+  // A flat head's plate, which bends (flat_plate.h); its membrane stresses stop at the knuckle.
+  std::optional<FlatPlateBending> flat_plate;
   std::optional<PresetComparison> preset;
   std::optional<VesselCodeCheck> code;     // with the design's code inputs
   std::optional<VesselMeasures> measures;  // an exact head: volumes, areas, weight

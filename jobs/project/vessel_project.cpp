@@ -134,7 +134,7 @@ void read_head(const XmlElementReader& r, VesselDesign& d, bool curvature_inputs
   }
   HeadPreset h;
   const std::string preset =
-      r.choice("preset", {"hemispherical", "ellipsoidal", "torispherical", "conical"});
+      r.choice("preset", {"hemispherical", "ellipsoidal", "torispherical", "conical", "flat"});
   if (preset == "ellipsoidal") {
     h.kind = HeadKind::ellipsoidal;
     h.ratio = r.positive("ratio", 2.0);
@@ -146,6 +146,11 @@ void read_head(const XmlElementReader& r, VesselDesign& d, bool curvature_inputs
       r.fail("knuckle", "a knuckle radius below the vessel radius " + number(d.radius) + " mm");
     if (!(h.crown >= d.radius))
       r.fail("crown", "a crown radius at least the vessel radius " + number(d.radius) + " mm");
+  } else if (preset == "flat") {
+    h.kind = HeadKind::flat;
+    h.knuckle = r.positive("knuckle");
+    if (!(h.knuckle < d.radius))
+      r.fail("knuckle", "a knuckle radius below the vessel radius " + number(d.radius) + " mm");
   } else if (preset == "conical") {
     h.kind = HeadKind::conical;
     const double angle = r.positive("half-angle");
@@ -397,6 +402,7 @@ std::string vessel_project_xml(const VesselProject& p) {
       attribute(out, "crown", d.preset->crown);
       attribute(out, "knuckle", d.preset->knuckle);
     }
+    if (d.preset && d.preset->kind == HeadKind::flat) attribute(out, "knuckle", d.preset->knuckle);
     if (d.preset && d.preset->kind == HeadKind::conical) {
       attribute(out, "half-angle", to_degrees(d.preset->half_angle));
       attribute(out, "knuckle", d.preset->knuckle);

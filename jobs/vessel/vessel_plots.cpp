@@ -45,8 +45,10 @@ void mark_compressive_ranges(Plot& plot, const StressProfile& p, bool preset) {
       // Labelled at its end: its start is often junction A, which has its own label.
       plot.add_vertical_line(b.s_from, "", kPresetRangeColor);
       plot.add_vertical_line(b.s_to, "preset σθ < 0 up to here", kPresetRangeColor);
-    } else {
+    } else if (b.s_to > b.s_from) {
       plot.add_band(b.s_from, b.s_to, i == 0 ? "compressive hoop stress (design)" : "", kFlagColor);
+    } else {  // a single angle (a flat head's junction, its only membrane sample)
+      plot.add_vertical_line(b.s_from, "compressive hoop stress (design)", kFlagColor);
     }
     plot.add_annotation(0.5 * (b.s_from + b.s_to), b.min_hoop_stress,
                         std::string(preset ? "preset " : "") + "σθ " +
@@ -115,7 +117,10 @@ Figure stress_figure(const VesselSolveStage& r) {
       "at the right)";
   plot.y_label = "membrane stress [MPa]";
   // The head fills the width: of the cylinder, whose membrane stresses are constant, only a stub.
-  const double head_length = s.stresses.samples.back().s;  // at the apex, the last sample
+  // At the apex, the last sample; a flat head's only head sample is its junction: to its apex.
+  const double last = s.stresses.samples.back().s;
+  const double head_length =
+      last > 0.0 ? last : arc_length(s.profile, 0.0, std::numbers::pi / 2, 64);
   plot.x_range = AxisRange{-kCylinderShare * head_length, head_length};
   if (s.preset) {
     const StressProfile& preset = s.preset->stresses;

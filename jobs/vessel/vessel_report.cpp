@@ -72,6 +72,7 @@ json standard_head_json(const HeadPreset& h, const HeadShape& shape) {
     j["half_angle_deg"] = h.half_angle * kDegreesPerRadian;
     j["knuckle_mm"] = h.knuckle;
   }
+  if (h.kind == HeadKind::flat) j["knuckle_mm"] = h.knuckle;
   j["depth_mm"] = shape.depth;
   j["curvature_jumps"] = json::array();
   for (const CurvatureJump& k : shape.jumps)
@@ -280,6 +281,13 @@ json vessel_report_fields(const VesselSolveStage& r, const VesselConversionStage
   j["edge_bending"] = edge_bending_json(s.edge_bending);
   j["code"] = s.code ? code_json(d, *s.code) : json(nullptr);
   j["measures"] = s.measures ? measures_json(*s.measures) : json(nullptr);
+  j["flat_plate"] =
+      s.flat_plate
+          ? json{{"plate_radius_mm", s.flat_plate->plate_radius},
+                 {"clamped_edge_stress_mpa", s.flat_plate->clamped_edge},
+                 {"clamped_centre_stress_mpa", s.flat_plate->clamped_centre},
+                 {"simply_supported_centre_stress_mpa", s.flat_plate->simply_supported_centre}}
+          : json(nullptr);
   j["design_measures"] = s.measures_of_design
                              ? json{{"head_volume_mm3", s.measures_of_design->volume},
                                     {"head_area_mm2", s.measures_of_design->area}}

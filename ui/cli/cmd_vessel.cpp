@@ -116,7 +116,8 @@ void add_vessel_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "vessel",
       "Design a pressure-vessel head: a standard head (hemispherical, ellipsoidal,\n"
-      "torispherical or conical) exactly, as rational quadratic arcs, a head synthesised from "
+      "torispherical, conical or flanged flat) exactly, as rational quadratic arcs, a head "
+      "synthesised from "
       "prescribed\n"
       "curvatures under end conditions, or the head of a given depth with the smallest peak\n"
       "membrane stress (compared with the standard heads of that depth), converted to an exact\n"

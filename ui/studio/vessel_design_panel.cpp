@@ -68,8 +68,8 @@ bool VesselDesignPanel::draw(VesselProject& p) {
 
 bool VesselDesignPanel::draw_preset(VesselDesign& d) {
   bool changed = false;
-  static constexpr std::array<std::string_view, 5> kNames = {"none", "hemispherical", "ellipsoidal",
-                                                             "torispherical", "conical"};
+  static constexpr std::array<std::string_view, 6> kNames = {
+      "none", "hemispherical", "ellipsoidal", "torispherical", "conical", "flat"};
   int kind = d.preset ? static_cast<int>(d.preset->kind) + 1 : 0;
   if (combo("preset", kind, kNames)) {
     if (kind == 0) {
@@ -79,6 +79,7 @@ bool VesselDesignPanel::draw_preset(VesselDesign& d) {
       preset.kind = static_cast<HeadKind>(kind - 1);
       if (preset.kind == HeadKind::conical)  // a 30° toriconical head, knuckle 6 % of D
         preset.half_angle = std::numbers::pi / 6, preset.knuckle = 0.12 * d.radius;
+      if (preset.kind == HeadKind::flat) preset.knuckle = 0.12 * d.radius;
       d.preset = preset;
     }
     changed = true;
@@ -100,6 +101,8 @@ bool VesselDesignPanel::draw_preset(VesselDesign& d) {
       changed = true;
     }
   }
+  if (h.kind == HeadKind::flat)
+    changed |= drag_number("knuckle radius [mm]", h.knuckle, 0.5, 0.01, 1e7, "%.3f");
   if (h.kind == HeadKind::conical) {
     double degrees = to_degrees(h.half_angle);
     if (drag_number("half apex angle [deg]", degrees, 0.1, 1.0, 89.0, "%.2f")) {

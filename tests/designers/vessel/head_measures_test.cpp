@@ -242,6 +242,38 @@ TEST(HeadMeasures, ConicalHeadsAgreeWithTheMeridianIntegral) {
   EXPECT_NEAR(conical_head_measures(500, kPi / 6, 0).area, kPi * 250000 * 2, 1e-6);
 }
 
+// Flanged flat heads against the meridian integral (the offset of a smooth meridian needs no
+// fan), the closed form V = π c² r + π² c r²/2 + 2π r³/3, A = π² r c + 2π r² + π c² written out
+// here (c = R − r). (A 5 mm knuckle agrees with the closed form; its plate, R = r/sin θ from
+// θ ≈ 0.6°, is too steep for the integral's 20000 Simpson steps: 2e-7.)
+TEST(HeadMeasures, FlatHeadsAgreeWithTheMeridianIntegral) {
+  for (const double r : {60.0, 40.0, 250.0}) {
+    const HeadPreset preset{HeadKind::flat, 2.0, 0.0, r};
+    const HeadShape shape = head_shape(preset, 500);
+    const HeadMeasures m = flat_head_measures(500, r);
+    const HeadMeasures n = integrated(shape, 0.0);
+    const double c = 500 - r;
+    EXPECT_LT(
+        relative(m.volume, kPi * c * c * r + kPi * kPi * c * r * r / 2 + 2 * kPi * r * r * r / 3),
+        1e-14)
+        << r;
+    EXPECT_LT(relative(m.area, kPi * kPi * r * c + 2 * kPi * r * r + kPi * c * c), 1e-14) << r;
+    const HeadMeasures thin = flat_head_measures(500, 5);
+    EXPECT_LT(relative(thin.volume, kPi * 495 * 495 * 5 + kPi * kPi * 495 * 12.5 + 250 * kPi / 3),
+              1e-14);
+    EXPECT_LT(relative(m.volume, n.volume), 1e-10) << r;
+    EXPECT_LT(relative(m.area, n.area), 1e-10) << r;
+    EXPECT_EQ(head_measures(preset, 500).volume, m.volume);
+    for (const double t : {0.5, 10.0, 40.0}) {
+      EXPECT_LT(relative(flat_metal_volume(500, r, t), integrated(shape, t).volume - n.volume),
+                1e-9)
+          << r << " t = " << t;
+      EXPECT_EQ(head_metal_volume(preset, 500, t), flat_metal_volume(500, r, t));
+    }
+  }
+  EXPECT_THROW(flat_head_measures(500, 0.0), InputError);
+}
+
 TEST(HeadMeasures, PresetsDispatchToTheirHeads) {
   EXPECT_EQ(head_measures(kHemisphere, 500).volume, hemispherical_head_measures(500).volume);
   EXPECT_EQ(head_measures(kTwoToOne, 500).area, ellipsoidal_head_measures(500, 250).area);

@@ -167,6 +167,24 @@ TEST(VesselProject, TargetPlacesVolumeAndSmoothingRules) {
             "design=\"curvature\", got '1e8'");
 }
 
+// A flanged flat head: its knuckle read and saved; a missing or too large knuckle named.
+TEST(VesselProject, FlatHead) {
+  std::vector<std::string> warnings;
+  const VesselProject p = parse_vessel_project(
+      vessel(kVessel, "<head preset=\"flat\" knuckle=\"60\"/>\n"), "t.xml", warnings);
+  ASSERT_TRUE(p.design.preset);
+  EXPECT_EQ(p.design.preset->kind, HeadKind::flat);
+  EXPECT_EQ(p.design.preset->knuckle, 60.0);
+  EXPECT_EQ(p.design.head_design, HeadDesign::exact);
+  EXPECT_EQ(parse_vessel_project(vessel_project_xml(p), "mem.xml", warnings), p);
+  EXPECT_EQ(error_of(vessel(kVessel, "<head preset=\"flat\"/>\n")),
+            "t.xml:3: <head> attribute 'knuckle': expected a number (attribute is missing)");
+  EXPECT_EQ(
+      error_of(vessel(kVessel, "<head preset=\"flat\" knuckle=\"500\"/>\n")),
+      "t.xml:3: <head> attribute 'knuckle': expected a knuckle radius below the vessel radius "
+      "500 mm, got '500'");
+}
+
 TEST(VesselProject, ToDesignConvertsUnits) {
   const VesselDesign d = to_design(odd_project());
   ASSERT_EQ(d.targets.size(), 4u);
@@ -224,9 +242,9 @@ TEST(VesselProject, BadValuesNameFileLineAndAttribute) {
       {vessel(kVessel, "<head preset=\"torispherical\" crown=\"400\" knuckle=\"60\"/>\n"),
        "t.xml:3: <head> attribute 'crown': expected a crown radius at least the vessel radius 500 "
        "mm, got '400'"},
-      {vessel(kVessel, "<head preset=\"flat\"/>\n"),
+      {vessel(kVessel, "<head preset=\"dome\"/>\n"),
        "t.xml:3: <head> attribute 'preset': expected one of "
-       "hemispherical|ellipsoidal|torispherical|conical, got 'flat'"},
+       "hemispherical|ellipsoidal|torispherical|conical|flat, got 'dome'"},
       {vessel(kVessel, "<head preset=\"conical\"/>\n"),
        "t.xml:3: <head> attribute 'half-angle': expected a number (attribute is missing)"},
       {vessel(kVessel, "<head preset=\"hemispherical\" targets=\"0\"/>\n"),
