@@ -222,22 +222,26 @@ TEST(ExactHeadJob, EndCurvatureAndOutsideDiameterAreRead) {
 
 #if POLARFORM_HAVE_OCCT
 
-// head.stp through Open CASCADE: one valid face, the head's (2, 2) B-spline, its points within
-// 1e-9 mm of ours (closed in u, the reader makes it periodic: poles are not compared one by one).
+// head.stp of a torispherical and a flat head through Open CASCADE: one valid face, the head's
+// (2, 2) B-spline, its points within 1e-9 mm of ours (closed in u, the reader makes it periodic:
+// poles are not compared one by one).
 TEST(ExactHeadJob, OpenCascadeReadsTheBiquadraticHead) {
-  const VesselJobResult r =
-      run_text(vessel_xml("<head preset=\"torispherical\" crown=\"1000\" knuckle=\"60\"/>", ""));
-  const exchange_test::ScratchDir dir("exact_head_step");
-  const std::map<std::string, std::string> files = render_vessel_outputs(r);
-  std::ofstream(dir / "head.stp", std::ios::binary) << files.at("head.stp");
-  STEPControl_Reader reader;
-  ASSERT_EQ(reader.ReadFile((dir / "head.stp").c_str()), IFSelect_RetDone);
-  reader.TransferRoots();
-  EXPECT_EQ(exchange_test::reader_messages(reader.WS(), true), "");
-  const std::vector<TopoDS_Face> faces = exchange_test::faces_of(reader.OneShape());
-  ASSERT_EQ(faces.size(), 1u);
-  exchange_test::expect_same_surface(faces[0], r.converted.surfaces.head, false);
-  EXPECT_TRUE(BRepCheck_Analyzer(faces[0]).IsValid());
+  for (const char* head : {"<head preset=\"torispherical\" crown=\"1000\" knuckle=\"60\"/>",
+                           "<head preset=\"flat\" knuckle=\"60\"/>"}) {
+    SCOPED_TRACE(head);
+    const VesselJobResult r = run_text(vessel_xml(head, ""));
+    const exchange_test::ScratchDir dir("exact_head_step");
+    const std::map<std::string, std::string> files = render_vessel_outputs(r);
+    std::ofstream(dir / "head.stp", std::ios::binary) << files.at("head.stp");
+    STEPControl_Reader reader;
+    ASSERT_EQ(reader.ReadFile((dir / "head.stp").c_str()), IFSelect_RetDone);
+    reader.TransferRoots();
+    EXPECT_EQ(exchange_test::reader_messages(reader.WS(), true), "");
+    const std::vector<TopoDS_Face> faces = exchange_test::faces_of(reader.OneShape());
+    ASSERT_EQ(faces.size(), 1u);
+    exchange_test::expect_same_surface(faces[0], r.converted.surfaces.head, false);
+    EXPECT_TRUE(BRepCheck_Analyzer(faces[0]).IsValid());
+  }
 }
 
 #else
