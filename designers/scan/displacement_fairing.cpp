@@ -134,8 +134,8 @@ DisplacementFairing fair_scanned_displacement(ScannedCam& scan,
       const RecoveredDesign design = recover_design(scan);
       SegmentedDisplacementOptions so;
       so.degree = s0.degree();
-      SegmentedDisplacement refit = fit_segmented_displacement(
-          scan.samples, displacement_pieces(design), scan.displacement.noise, so);
+      SegmentedDisplacement refit =
+          fit_segmented_displacement(scan.samples, displacement_pieces(design), so);
       const double moved = max_difference(refit.height.spline(), s0);
       if (!refit.discrepancy_met) {
         // Even the least penalty leaves more than n·σ̂² (the pieces do not fit, or σ̂ is low):
@@ -153,6 +153,8 @@ DisplacementFairing fair_scanned_displacement(ScannedCam& scan,
                           std::to_string(moved) + " mm, beyond the tolerance";
       }
     } catch (const InputError& e) {
+      r.refit_skipped = e.what();
+    } catch (const NumericalError& e) {
       r.refit_skipped = e.what();
     }
   }

@@ -1,7 +1,7 @@
 // Fairing the follower displacement recovered from a scan (MIT 13.472J §8.2.3 on s(θ), whose
 // derivatives are the SVAJ). Farin's: s is first refitted along the design recovered from the scan
 // (segmented_displacement.h: constant over the dwells, the laws' continuity at the boundaries,
-// the motions smoothed to Morozov's discrepancy n·σ̂² instead of GCV's), then its simple knots are
+// the motions smoothed to Morozov's discrepancy n·σ̂² rather than by GCV), then its simple knots are
 // removed and re-inserted (Farin's knot removal, MIT 13.472J (8.19)–(8.33); the boundary knots,
 // multiple, are left alone, as is every control value within the degree of the ends, so the seam
 // stays as refitted). When no design can be recovered, the refit cannot reach the discrepancy

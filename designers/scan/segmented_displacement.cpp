@@ -1,6 +1,7 @@
 #include "designers/scan/segmented_displacement.h"
 
 #include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 #include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
@@ -17,7 +18,9 @@ namespace {
 
 constexpr double kTwoPi = 2 * std::numbers::pi;
 constexpr double kZeroDerivative = 1e-9;  // |S^(k)| of a normalised law at an end that is zero
-constexpr double kSnap = 0.25;            // a break this many spans from a uniform knot moves on it
+constexpr double kSnap = 0.25;            // a uniform knot this many spans from a break is left out
+constexpr double kOnKnot = 0.05;  // a break this many spans from a uniform knot is put on it
+constexpr double kBreakZ = 3.0;   // … or this many of its standard deviations
 
 double wrap(double a) {
   const double t = std::fmod(a, kTwoPi);
@@ -36,12 +39,15 @@ int end_continuity(const LawShape& shape, double x) {
   return std::abs(d[2]) > kZeroDerivative ? 1 : 2;
 }
 
-// Gauss–Legendre nodes and weights on [−1, 1], 4 points: exact for the degree-2(p−3) integrand of
-// ∫s‴² on a quintic's span.
-constexpr double kGaussX[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563,
-                               0.8611363115940526};
-constexpr double kGaussW[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461,
-                               0.3478548451374538};
+// Gauss–Legendre nodes and weights on [−1, 1], 7 points: exact for the degree-2(p−3) integrand of
+// ∫s‴² on a span up to degree 9.
+constexpr int kGauss = 7;
+constexpr double kGaussX[kGauss] = {
+    -0.9491079123427585, -0.7415311855993945, -0.4058451513773972, 0.0,
+    0.4058451513773972,  0.7415311855993945,  0.9491079123427585};
+constexpr double kGaussW[kGauss] = {0.1294849661688697, 0.2797053914892766, 0.3818300505051189,
+                                    0.4179591836734694, 0.3818300505051189, 0.2797053914892766,
+                                    0.1294849661688697};
 
 }  // namespace
 
@@ -56,12 +62,18 @@ DisplacementPieces displacement_pieces(const RecoveredDesign& r) {
     const double leave = nearest_turn(after.start, anchor.end);
     const int c_arrive = end_continuity(before.shape, 1.0);
     const int c_leave = end_continuity(after.shape, 0.0);
+    const double sd_arrive = before.sd.size() > 1 ? before.sd[1] : 0.0;
+    const double sd_leave = after.sd.size() > 0 ? after.sd[0] : 0.0;
     if (r.segmentation.is_dwell[k] && arrive < leave) {
-      out.breaks.push_back({wrap(arrive), c_arrive});
-      out.breaks.push_back({wrap(leave), c_leave});
+      out.breaks.push_back({wrap(arrive), c_arrive, sd_arrive});
+      out.breaks.push_back({wrap(leave), c_leave, sd_leave});
       out.dwells.emplace_back(wrap(arrive), wrap(leave));
     } else {
-      out.breaks.push_back({wrap(0.5 * (arrive + leave)), std::min(c_arrive, c_leave)});
+      // The mean of the two ends: its variance is a quarter of the sum of theirs, and it is at
+      // least half their difference from either.
+      out.breaks.push_back(
+          {wrap(0.5 * (arrive + leave)), std::min(c_arrive, c_leave),
+           std::max(0.5 * std::hypot(sd_arrive, sd_leave), 0.5 * std::abs(leave - arrive))});
     }
   }
   std::sort(
@@ -71,51 +83,60 @@ DisplacementPieces displacement_pieces(const RecoveredDesign& r) {
 }
 
 SegmentedDisplacement fit_segmented_displacement(const FollowerSamples& s,
-                                                 const DisplacementPieces& pieces, double noise,
+                                                 const DisplacementPieces& pieces,
                                                  const SegmentedDisplacementOptions& o) {
   const int p = o.degree;
   if (p < 3 || p > 9 || o.spans < p + 1)
     throw InputError("segmented displacement: degree " + std::to_string(p) + " and " +
                      std::to_string(o.spans) + " spans; expected 3–9 and more spans than it");
-  if (!(noise > 0)) throw InputError("segmented displacement: the noise σ̂ must be positive");
   const Eigen::Index n = s.theta.size();
   if (n < 2 * o.spans)
     throw InputError("segmented displacement: " + std::to_string(n) + " samples for " +
                      std::to_string(o.spans) + " spans; expected at least two per span");
-  // The uniform grid; a break within kSnap spans of a grid value moves onto it (index 0 and
-  // `spans` both mean the seam).
+  // The uniform knots, less any within kSnap spans of a break (no sliver spans); the breaks stay
+  // where the design put them, except within kOnKnot spans or 3 standard deviations of a uniform
+  // knot (θ = 0: the seam), where they go on it, and two breaks within half a span, which join at
+  // the first.
   const double h = kTwoPi / o.spans;
-  std::vector<double> grid(static_cast<std::size_t>(o.spans) + 1);
-  for (int k = 0; k <= o.spans; ++k) grid[static_cast<std::size_t>(k)] = k * h;
-  grid.back() = kTwoPi;
-  const auto snap = [&](double a) {
-    const double t = wrap(a);
-    const long k = std::lround(t / h);
-    if (std::abs(t - k * h) < kSnap * h)
-      return k >= o.spans ? 0.0 : grid[static_cast<std::size_t>(k)];
-    return t;
-  };
-  // Interior knot value → the lowest continuity asked there.
-  std::vector<std::pair<double, int>> at;
+  std::vector<DisplacementBreak> sorted = pieces.breaks;
+  for (DisplacementBreak& b : sorted) b.theta = wrap(b.theta);
+  std::sort(
+      sorted.begin(), sorted.end(),
+      [](const DisplacementBreak& a, const DisplacementBreak& b) { return a.theta < b.theta; });
+  std::vector<std::pair<double, int>> at;         // knot value, the lowest continuity asked there
+  std::vector<std::pair<double, double>> placed;  // a break's angle → its knot (0: the seam)
   int seam = p - 1;
-  for (const DisplacementBreak& b : pieces.breaks) {
-    const double t = snap(b.theta);
+  for (const DisplacementBreak& b : sorted) {
+    // A uniform knot within kBreakZ standard deviations of the break: the data cannot tell them
+    // apart, and the break goes on it.
+    const double slack = std::max(kOnKnot * h, kBreakZ * b.sd);
+    const double k = std::round(b.theta / h);
+    const double t = std::abs(b.theta - k * h) <= slack ? (k >= o.spans ? 0.0 : k * h) : b.theta;
     const int c = std::clamp(b.continuity, 0, p - 1);
     if (t == 0.0) {
       seam = std::min(seam, c);
-      continue;
-    }
-    auto it = std::find_if(at.begin(), at.end(), [&](const auto& e) { return e.first == t; });
-    if (it == at.end())
+      placed.emplace_back(b.theta, 0.0);
+    } else if (!at.empty() && t - at.back().first < 0.5 * h) {
+      at.back().second = std::min(at.back().second, c);
+      placed.emplace_back(b.theta, at.back().first);
+    } else {
       at.emplace_back(t, c);
-    else
-      it->second = std::min(it->second, c);
+      placed.emplace_back(b.theta, t);
+    }
   }
+  const auto place = [&](double a) {
+    const double t = wrap(a);
+    for (const auto& [from, to] : placed)
+      if (from == t) return to;
+    return t;
+  };
   std::vector<double> interior;
-  for (int k = 1; k < o.spans; ++k)
+  for (int k = 1; k < o.spans; ++k) {
+    const double u = k * h;
     if (std::none_of(at.begin(), at.end(),
-                     [&](const auto& e) { return e.first == grid[static_cast<std::size_t>(k)]; }))
-      interior.push_back(grid[static_cast<std::size_t>(k)]);
+                     [&](const auto& e) { return std::abs(e.first - u) < kSnap * h; }))
+      interior.push_back(u);
+  }
   for (const auto& [t, c] : at)
     for (int m = 0; m < p - c; ++m) interior.push_back(t);
   std::sort(interior.begin(), interior.end());
@@ -137,7 +158,7 @@ SegmentedDisplacement fit_segmented_displacement(const FollowerSamples& s,
     }
   };
   for (const auto& [start, end] : pieces.dwells) {
-    const double a = snap(start), b = snap(end);               // b <= a: the dwell holds the seam
+    const double a = place(start), b = place(end);             // b <= a: the dwell holds the seam
     if ((b > a ? b - a : b + kTwoPi - a) < 0.5 * h) continue;  // a joint, not a dwell
     ++dwells;
     if (b > a) {
@@ -189,7 +210,7 @@ SegmentedDisplacement fit_segmented_displacement(const FollowerSamples& s,
   for (int j = p; j < N; ++j) {
     if (!(U[j + 1] > U[j])) continue;
     const double half = 0.5 * (U[j + 1] - U[j]), mid = 0.5 * (U[j + 1] + U[j]);
-    for (int g = 0; g < 4; ++g) {
+    for (int g = 0; g < kGauss; ++g) {
       const Eigen::MatrixXd d = ders_basis_funs(j, mid + half * kGaussX[g], p, m, U);
       const Eigen::VectorXd dm = d.row(m).transpose();
       P.block(j - p, j - p, p + 1, p + 1) += half * kGaussW[g] * dm * dm.transpose();
@@ -198,40 +219,86 @@ SegmentedDisplacement fit_segmented_displacement(const FollowerSamples& s,
   const Eigen::MatrixXd M = Z.transpose() * BtB * Z, Q = Z.transpose() * P * Z;
   const Eigen::VectorXd g = Z.transpose() * Bty;
   const double scale = M.trace() / std::max(Q.trace(), 1e-300);
-
-  struct Solved {
-    Eigen::VectorXd x;
-    double rss;
+  // Q and B = M + μQ diagonalised together (Wᵀ B W = I, Wᵀ Q W = D; Demmler & Reinsch 1975), so
+  // that for every λ, with e_i = 1 + (λ − μ)d_i and b = Wᵀg: x = W diag(1/e) b,
+  // tr H = Σ (1 − μd_i)/e_i and RSS = yᵀy − Σ (2/e_i − (1 − μd_i)/e_i²) b_i².
+  const double mu = scale;
+  const Eigen::MatrixXd B = M + mu * Q;
+  // B singular: a direction neither the samples nor the penalty see.
+  if (Eigen::LLT<Eigen::MatrixXd>(B).info() != Eigen::Success)
+    throw NumericalError("segmented displacement: the penalised system is singular");
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(Q, B);
+  if (eig.info() != Eigen::Success)
+    throw NumericalError("segmented displacement: the penalised system is singular");
+  const Eigen::VectorXd d = eig.eigenvalues().cwiseMax(0.0);
+  // A clearly negative eigenvalue: B is too ill-conditioned for the eigenvectors to be trusted.
+  if (eig.eigenvalues().minCoeff() < -1e-9 * eig.eigenvalues().maxCoeff())
+    throw NumericalError("segmented displacement: the penalised system is ill-conditioned");
+  const Eigen::MatrixXd& W = eig.eigenvectors();
+  const Eigen::VectorXd bw = W.transpose() * g;
+  // RSS(λ) and tr H(λ).
+  const auto rss_dof = [&](double lambda, double& dof) {
+    double rss = yty;
+    dof = 0.0;
+    for (Eigen::Index i = 0; i < d.size(); ++i) {
+      const double keep = std::max(0.0, 1.0 - mu * d[i]), e = keep + lambda * d[i];
+      if (!(e > 0)) continue;
+      dof += keep / e;
+      rss -= (2.0 / e - keep / (e * e)) * bw[i] * bw[i];
+    }
+    return std::max(0.0, rss);
   };
-  const auto solve = [&](double lambda) {
-    Eigen::LDLT<Eigen::MatrixXd> f(M + lambda * Q);
-    Solved r{f.solve(g), 0.0};
-    r.rss = std::max(0.0, yty - 2.0 * r.x.dot(g) + r.x.dot(M * r.x));
-    return r;
-  };
+  const auto at_log = [&](double t) { return scale * std::pow(10.0, t); };
   SegmentedDisplacement out;
-  out.target_rss = static_cast<double>(n) * noise * noise;
   out.dwells = dwells;
   out.breaks = at.size() + (seam < p - 1 ? 1 : 0);
+  const double nn = static_cast<double>(n);
+  // GCV(λ) = n·RSS / (n − tr H)² on a grid of log λ, refined by golden section about its least.
+  const auto gcv = [&](double t) {
+    double dof;
+    const double rss = rss_dof(at_log(t), dof);
+    return nn * rss / ((nn - dof) * (nn - dof));
+  };
+  double best_t = -14.0, best_g = gcv(best_t);
+  for (double t = -13.75; t <= 10.0; t += 0.25)
+    if (const double v = gcv(t); v < best_g) best_g = v, best_t = t;
+  {
+    constexpr double kGolden = 0.6180339887498949;
+    double lo = best_t - 0.25, hi = best_t + 0.25;
+    for (int it = 0; it < 40; ++it) {
+      const double x1 = hi - kGolden * (hi - lo), x2 = lo + kGolden * (hi - lo);
+      if (gcv(x1) < gcv(x2))
+        hi = x2;
+      else
+        lo = x1;
+    }
+    if (gcv(0.5 * (lo + hi)) < best_g) best_t = 0.5 * (lo + hi);
+  }
+  double gcv_dof;
+  const double gcv_rss = rss_dof(at_log(best_t), gcv_dof);
+  out.gcv_lambda = at_log(best_t);
+  out.gcv_dof = gcv_dof;
+  out.noise = std::sqrt(gcv_rss / std::max(1.0, nn - gcv_dof));
+  out.target_rss = nn * out.noise * out.noise;
   // RSS(λ) increases with λ: bisect log λ for RSS = n·σ̂².
-  double lo = -14.0, hi = 10.0;
-  if (solve(scale * std::pow(10.0, lo)).rss >= out.target_rss) {
+  double lo = -14.0, hi = 10.0, dof;
+  if (rss_dof(at_log(lo), dof) >= out.target_rss) {
     hi = lo;
-  } else if (solve(scale * std::pow(10.0, hi)).rss <= out.target_rss) {
+  } else if (rss_dof(at_log(hi), dof) <= out.target_rss) {
     lo = hi;
   } else {
     out.discrepancy_met = true;
-    for (int it = 0; it < 80; ++it) {
+    for (int it = 0; it < 100; ++it) {
       const double mid = 0.5 * (lo + hi);
-      (solve(scale * std::pow(10.0, mid)).rss < out.target_rss ? lo : hi) = mid;
+      (rss_dof(at_log(mid), dof) < out.target_rss ? lo : hi) = mid;
     }
   }
-  out.lambda = scale * std::pow(10.0, 0.5 * (lo + hi));
-  const Solved best = solve(out.lambda);
-  out.rss = best.rss;
-  Eigen::LDLT<Eigen::MatrixXd> f(M + out.lambda * Q);
-  out.dof = f.solve(M).trace();
-  out.height = BSplineFunction(p, U, (Z * best.x).array() + mean);
+  out.lambda = at_log(0.5 * (lo + hi));
+  out.rss = rss_dof(out.lambda, out.dof);
+  const Eigen::VectorXd e =
+      (Eigen::VectorXd::Ones(d.size()) - mu * d).cwiseMax(0.0) + out.lambda * d;
+  const Eigen::VectorXd x = W * bw.cwiseQuotient(e);
+  out.height = BSplineFunction(p, U, (Z * x).array() + mean);
   return out;
 }
 

@@ -95,7 +95,9 @@ json refit_json(const DisplacementFairing& f) {
   if (!f.refit) return {{"applied", false}, {"skipped", f.refit_skipped}};
   const SegmentedDisplacement& r = *f.refit;
   return {{"applied", true},
-          {"smoothing", "discrepancy principle: RSS = n·σ̂²"},
+          {"smoothing", "discrepancy principle: RSS = n·σ̂², σ̂ from GCV on the same pieces"},
+          {"noise_mm", r.noise},
+          {"gcv_dof", r.gcv_dof},
           {"lambda", r.lambda},
           {"dof", r.dof},
           {"rss_mm2", r.rss},

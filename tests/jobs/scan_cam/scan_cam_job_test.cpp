@@ -50,7 +50,7 @@ TEST(ScanCamJob, FarinFairsTheRecoveredDisplacementWithinItsTolerance) {
   EXPECT_LE(f.measured_deviation, r.scan.displacement.noise);
   EXPECT_LE(r.comparison->svaj_stats[0].max, r.scan.displacement.noise);
   // The acceptance: the acceleration's rms error against the nominal falls by at least 2×
-  // (measured: 0.494 → 0.0302 mm/rad², 16×, s moved 1.9 µm with σ̂ = 5.0 µm).
+  // (measured: 0.494 → 0.0308 mm/rad², 16×, s moved 1.9 µm with σ̂ = 5.0 µm).
   ASSERT_TRUE(r.fairing->acceleration_rms_before);
   RecordProperty("a_rms_before", format_round_trip(*r.fairing->acceleration_rms_before));
   RecordProperty("a_rms_after", format_round_trip(*r.fairing->acceleration_rms_after));
