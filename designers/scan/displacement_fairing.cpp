@@ -39,12 +39,13 @@ double max_simple_knot_jump(const BSpline& c) {
   return worst;
 }
 
-// Farin's fairing within the pieces between the multiple knots of c (the boundaries of a refit):
-// each piece, clamped there by raising the knot to multiplicity p, is faired on its own with its
-// end control values fixed (p of them at the seam, c + 1 at a boundary of continuity C^c, which
-// keeps s … s^(c) there), and the knots are lowered back to their multiplicity by exact removal.
-// The pieces do not overlap, so each may move by the whole tolerance; each pass fairs the
-// largest jump of any piece, so max_passes counts over the whole curve.
+// Farin's fairing (MIT 13.472J §8.2.3) within the pieces between the multiple knots of c (the
+// boundaries of a refit): each piece, clamped there by raising the knot to multiplicity p, is
+// faired on its own with its end control values fixed (p of them at the seam, c + 1 at a boundary
+// of continuity C^c, which keeps s … s^(c) there), and the knots are lowered back to their
+// multiplicity by exact removal. The pieces do not overlap, so each may move by the whole
+// tolerance; each pass fairs the largest jump of any piece, so max_passes counts over the whole
+// curve.
 CurveFairing farin_fair_pieces(const BSpline& c, const FairingOptions& o) {
   const int p = c.degree();
   std::vector<Breakpoint> splits;
@@ -117,6 +118,8 @@ CurveFairing farin_fair_pieces(const BSpline& c, const FairingOptions& o) {
 
 }  // namespace
 
+// Refit along the recovered design (segmented_displacement.h), then MIT 13.472J §8.2.3
+// (8.19)–(8.33) on s(θ) within its pieces.
 DisplacementFairing fair_scanned_displacement(ScannedCam& scan,
                                               const ProfileFairingOptions& options) {
   DisplacementFairing r;

@@ -51,6 +51,7 @@ constexpr double kGaussW[kGauss] = {0.1294849661688697, 0.2797053914892766, 0.38
 
 }  // namespace
 
+// The boundaries as design_recovery.cpp joins the fitted laws (law_fit.h for their ends).
 DisplacementPieces displacement_pieces(const RecoveredDesign& r) {
   DisplacementPieces out;
   const std::size_t n = r.motions.size();
@@ -82,6 +83,7 @@ DisplacementPieces displacement_pieces(const RecoveredDesign& r) {
   return out;
 }
 
+// Morozov 1966 on the smoothing spline λ∫s‴² (Wahba 1990, §1.2), GCV σ̂ (Craven & Wahba 1979).
 SegmentedDisplacement fit_segmented_displacement(const FollowerSamples& s,
                                                  const DisplacementPieces& pieces,
                                                  const SegmentedDisplacementOptions& o) {
