@@ -90,6 +90,24 @@ std::string deviation_csv(const NominalComparison& c) {
 }
 
 // Largest |x| over a revolution of the recovered s^(k), and the lift max s − min s.
+// Farin's refit of s along the recovered design (segmented_displacement.h), or why there is none.
+json refit_json(const DisplacementFairing& f) {
+  if (!f.refit) return {{"applied", false}, {"skipped", f.refit_skipped}};
+  const SegmentedDisplacement& r = *f.refit;
+  return {{"applied", true},
+          {"smoothing", "discrepancy principle: RSS = n·σ̂², σ̂ from GCV on the same pieces"},
+          {"noise_mm", r.noise},
+          {"gcv_dof", r.gcv_dof},
+          {"lambda", r.lambda},
+          {"dof", r.dof},
+          {"rss_mm2", r.rss},
+          {"target_rss_mm2", r.target_rss},
+          {"discrepancy_met", r.discrepancy_met},
+          {"boundaries", r.breaks},
+          {"dwells", r.dwells},
+          {"deviation_mm", f.refit_deviation}};
+}
+
 json motion_json(const ScannedCam& s) {
   double lo = INFINITY, hi = -INFINITY, peak[4] = {0, 0, 0, 0};
   for (double theta : cam_angles()) {
@@ -194,8 +212,9 @@ std::string html_report(const ScanCamJobResult& r, const json& report,
                "Recovered s, v, a, j against cam angle (per radian of cam angle).");
   if (r.fairing)
     html.add_svg(svgs.at("fairing.svg"),
-                 "The recovered acceleration before and after fairing s(θ), and the jumps of "
-                 "its p-th derivative at the knots faired.");
+                 "The recovered acceleration before and after fairing s(θ) (Farin: refitted "
+                 "along the recovered design, then its knots faired), and the jumps of its p-th "
+                 "derivative at the knots faired.");
   if (r.comparison) {
     html.add_svg(svgs.at("svaj_difference.svg"), "Recovered minus nominal s, v, a, j.");
     std::vector<std::vector<std::string>> rows;
@@ -293,6 +312,7 @@ json scan_cam_report_json(const ScanCamJobResult& r, const std::vector<std::stri
                     {"max_jump_before", f->fairing.max_jump_before},
                     {"max_jump_after", f->fairing.max_jump_after},
                     {"measured_deviation_mm", f->fairing.measured_deviation},
+                    {"refit", refit_json(f->fairing)},
                     {"acceleration_rms_error_before", nullptr},
                     {"acceleration_rms_error_after", nullptr}};
     if (f->acceleration_rms_before) {

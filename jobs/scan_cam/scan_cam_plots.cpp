@@ -117,7 +117,12 @@ Figure scan_svaj_figure(const ScanCamJobResult& r) {
 Figure scan_fairing_figure(const ScanCamJobResult& r) {
   const ScanCamFairing& f = *r.fairing;
   Figure fig(800, 700);
-  fig.title = "Fairing of s(θ) (" + fairing_method_name(f.fairing.method) + ", " +
+  const std::string refit = f.fairing.refit
+                                ? "refitted along the recovered design (" +
+                                      std::to_string(f.fairing.refit->breaks) + " boundaries, " +
+                                      std::to_string(f.fairing.refit->dwells) + " dwells), "
+                                : std::string();
+  fig.title = "Fairing of s(θ) (" + fairing_method_name(f.fairing.method) + ", " + refit +
               std::to_string(f.fairing.steps.size()) + " knots, moved " +
               number_text(f.fairing.measured_deviation) + " mm)";
   const std::vector<double> theta = grid(1440);
