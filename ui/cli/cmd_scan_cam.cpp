@@ -201,8 +201,11 @@ void add_scan_cam_command(CLI::App& app) {
                   "profile to the deviation report.json states (design.redesign_deviation)");
   cmd->add_option("--fair", args->fair,
                   "farin|kjellander: fair the recovered displacement s(θ) before the motion is "
-                  "compared and recovered (MIT §8.2.3); fairing.svg shows the acceleration before "
-                  "and after (Kjellander needs a cubic s and is refused on the quintic)");
+                  "compared and recovered (MIT §8.2.3); farin first refits s along the design "
+                  "recovered from the scan (constant dwells, the laws' continuity at their "
+                  "boundaries, smoothed to the noise by the discrepancy principle), then fairs its "
+                  "knots; fairing.svg shows the acceleration before and after (Kjellander needs a "
+                  "cubic s and is refused on the quintic)");
   cmd->add_option("--fair-tol", args->fair_tol,
                   "how far fairing may move s [mm] (default 3 × the displacement fit's noise)");
   cmd->add_option("--fair-passes", args->fair_passes,
