@@ -127,7 +127,9 @@ std::vector<double> inflections(const NurbsCurve2d& curve) {
         ((evaluate(D, m) > 0) == (f_lo > 0) ? lo : hi) = m;
       }
       const double t = 0.5 * (lo + hi);
-      if (t > 0 && t < 1) out.push_back(a + h * t);
+      // A zero at the curve's own ends (a natural end's κ = 0, rounded) has no side beyond it.
+      const bool at_end = (i == 0 && t < 1e-9) || (i + 1 == b.segments.size() && t > 1 - 1e-9);
+      if (t > 0 && t < 1 && !at_end) out.push_back(a + h * t);
     }
   }
   return out;

@@ -28,7 +28,8 @@ double signed_curvature(const NurbsCurve2d& curve, double u);
 double curvature_derivative(const NurbsCurve2d& curve, double u);
 
 // The parameters where the signed curvature changes sign, in increasing order (a root of
-// det(Pʷ, Pʷ′, Pʷ″) where it does not change sign is a flat point, not an inflection).
+// det(Pʷ, Pʷ′, Pʷ″) where it does not change sign is a flat point, not an inflection; nor is a
+// zero within 1e-9 of a segment at the curve's own ends, e.g. a natural cubic's end).
 std::vector<double> inflections(const NurbsCurve2d& curve);
 
 }  // namespace polarform

@@ -10,6 +10,7 @@
 
 #include "src/error.h"
 #include "src/nurbs/curve_interpolation.h"
+#include "src/nurbs/curve_interrogation.h"
 #include "src/nurbs/knot_insertion.h"
 #include "src/nurbs/knot_removal.h"
 #include "src/nurbs/knots.h"
@@ -153,6 +154,27 @@ TEST(KjellanderFairing, RestoresTheBumpedPointAndLeavesTheOthers) {
   const KjellanderFairing g = kjellander_fair(b.points, b.t, eps);
   EXPECT_LE(g.max_data_move, 0.05);
   EXPECT_LE((g.values - b.points).colwise().norm().maxCoeff(), 0.05);
+}
+
+// The check: the cubic through a semicircle's 19 points with one pushed out by 0.5 (5 % of
+// the radius) has inflections around it; Kjellander's fairing within 1 mm restores the point to
+// within that tolerance and the curvature plot to the semicircle's true count, none.
+TEST(KjellanderFairing, RestoresTheTrueNumberOfInflections) {
+  Bumped b = bumped_semicircle();
+  b.points.col(9) *= 10.5 / 10.1;
+  const auto count = [](const BSpline& c) {
+    Eigen::MatrixXd h(3, c.size());
+    h.topRows(2) = c.coefs();
+    h.row(2).setOnes();
+    return inflections(NurbsCurve2d(BSpline(c.degree(), c.knots(), h))).size();
+  };
+  EXPECT_GE(count(interpolate_cubic(b.points, b.t)), 2u);
+  FairingOptions o;
+  o.tolerance = 1.0;
+  const KjellanderFairing f = kjellander_fair(b.points, b.t, o);
+  EXPECT_EQ(count(f.spline), 0u);
+  EXPECT_LE(f.max_data_move, 1.0);
+  EXPECT_LT(std::abs(f.values.col(9).norm() - 10.0), 0.05);
 }
 
 TEST(Fairing, RefusesANonPositiveTolerance) {
