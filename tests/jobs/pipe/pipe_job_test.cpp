@@ -66,6 +66,66 @@ TEST(PipeJob, USpineBoundAndBundle) {
   EXPECT_NEAR(j["bounds_mm"]["delta"].get<double>(), r.bounds.delta, 1e-9);
 }
 
+// The helix (a = 2, c = 2, 1.5 turns: κ = a/(a² + c²) = 1/4, pitch 4π, so the local
+// bound 4 limits): the cubic spline through the CSV's 601 points gives δ = 1/κ_max to 1e-12 and
+// κ_max the closed form to 1e-4 (the spline's own error); 0.99 δ passes and every surface sample
+// lies r from the exact helix within the tolerance plus the spline's own distance from the helix
+// (measured here by Newton on the closed form); 1.01 δ is refused.
+TEST(PipeJob, HelixBoundIsItsClosedFormCurvature) {
+  const double a = 2, c = 2, end = 3 * std::numbers::pi;
+  const fs::path dir = fs::temp_directory_path() / "polarform_pipe_job_helix";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path spine = dir / "helix.csv";
+  {
+    std::ofstream out(spine);
+    out.precision(17);
+    out << "x,y,z\n";
+    for (int k = 0; k <= 600; ++k) {
+      const double t = end * k / 600;
+      out << a * std::cos(t) << ',' << a * std::sin(t) << ',' << c * t << '\n';
+    }
+  }
+  const auto helix_distance = [&](const Eigen::Vector3d& p) {  // min over t of |p − H(t)|
+    double best = 1e300, t_best = 0;
+    for (int k = 0; k <= 2000; ++k) {
+      const double t = -0.5 + (end + 1) * k / 2000;
+      const double d = (p - Eigen::Vector3d(a * std::cos(t), a * std::sin(t), c * t)).norm();
+      if (d < best) best = d, t_best = t;
+    }
+    for (int it = 0; it < 30; ++it) {  // Newton on f(t) = (H(t) − p)·H'(t)
+      const Eigen::Vector3d h(a * std::cos(t_best), a * std::sin(t_best), c * t_best);
+      const Eigen::Vector3d d1(-a * std::sin(t_best), a * std::cos(t_best), c);
+      const Eigen::Vector3d d2(-a * std::cos(t_best), -a * std::sin(t_best), 0);
+      t_best -= (h - p).dot(d1) / (d1.dot(d1) + (h - p).dot(d2));
+    }
+    return (p - Eigen::Vector3d(a * std::cos(t_best), a * std::sin(t_best), c * t_best)).norm();
+  };
+  PipeJobOptions o;
+  o.radius = 1.0;
+  const PipeJobResult probe = run_pipe_job(spine, o);
+  EXPECT_EQ(probe.bounds.limiting_mode, "local");
+  EXPECT_NEAR(probe.bounds.local, 1 / probe.curvature.kappa_max, 1e-12);
+  EXPECT_NEAR(probe.curvature.kappa_max, a / (a * a + c * c), 1e-4 * 0.25);
+  RecordProperty("kappa_max", std::to_string(probe.curvature.kappa_max));
+  o.radius = 0.99 * probe.bounds.delta;
+  const PipeJobResult r = run_pipe_job(spine, o);
+  EXPECT_TRUE(r.nonsingular);
+  EXPECT_LE(r.pipe.max_error, r.tolerance);
+  double worst = 0.0;
+  const NurbsSurface& S = r.pipe.surface;
+  for (int i = 0; i <= 24; ++i)
+    for (int j = 0; j <= 60; ++j) {
+      const double u = S.front_u() + (S.back_u() - S.front_u()) * i / 24;
+      const double v = S.front_v() + (S.back_v() - S.front_v()) * j / 60;
+      worst = std::max(worst, std::abs(helix_distance(S.point(u, v)) - o.radius));
+    }
+  RecordProperty("helix_pipe_error", std::to_string(worst));
+  EXPECT_LE(worst, r.tolerance + 1e-5);
+  o.radius = 1.01 * probe.bounds.delta;
+  EXPECT_THROW(run_pipe_job(spine, o), InputError);
+}
+
 TEST(PipeJob, ARadiusAtTheBoundIsAnInfeasibleDesign) {
   const fs::path dir = fs::temp_directory_path() / "polarform_pipe_job_bad";
   fs::remove_all(dir);
