@@ -3,6 +3,8 @@
 #include <algorithm>
 
 #include "designers/vessel/head_measures.h"
+#include "src/error.h"
+#include "src/number_text.h"
 
 namespace polarform {
 
@@ -58,16 +60,28 @@ VesselCodeCheck check_vessel_code(const CodeInputs& code, double radius, double 
 }
 
 VesselMeasures vessel_measures(const HeadPreset& preset, double radius, double length,
-                               double thickness, double density) {
-  const HeadMeasures head = head_measures(preset, radius);
+                               double thickness, double density, double straight_flange) {
+  if (!(straight_flange >= 0.0 && 2 * straight_flange < length))
+    throw InputError("vessel measures: straight flange " + number_text(straight_flange) +
+                     " mm, expected >= 0 and below half the length " + number_text(length) + " mm");
+  const HeadMeasures dish = head_measures(preset, radius);
   const HeadMeasures shell = cylinder_measures(radius, length);
+  const double dish_metal = head_metal_volume(preset, radius, thickness);
   VesselMeasures out;
-  out.head_volume = head.volume;
-  out.head_area = head.area;
-  out.vessel_volume = 2 * head.volume + shell.volume;
-  out.metal_volume = 2 * head_metal_volume(preset, radius, thickness) +
-                     cylinder_metal_volume(radius, length, thickness);
+  out.straight_flange = straight_flange;
+  out.head_volume = dish.volume;
+  out.head_area = dish.area;
+  out.head_metal_volume = dish_metal;
+  if (straight_flange > 0.0) {  // π R² f, 2π R f and the wall's ring
+    const HeadMeasures flange = cylinder_measures(radius, straight_flange);
+    out.head_volume += flange.volume;
+    out.head_area += flange.area;
+    out.head_metal_volume += cylinder_metal_volume(radius, straight_flange, thickness);
+  }
+  out.vessel_volume = 2 * dish.volume + shell.volume;
+  out.metal_volume = 2 * dish_metal + cylinder_metal_volume(radius, length, thickness);
   out.density = density;
+  out.head_weight = metal_weight(out.head_metal_volume, density);
   out.weight = metal_weight(out.metal_volume, density);
   return out;
 }

@@ -35,16 +35,23 @@ VesselCodeCheck check_vessel_code(const CodeInputs& code, double radius, double 
                                   double pressure, const std::optional<HeadPreset>& exact_head);
 
 struct VesselMeasures {
-  double head_volume = 0.0, head_area = 0.0;  // one head above its junction plane, mm³, mm²
-  double vessel_volume = 0.0;                 // two heads and the cylinder, mm³
+  // One formed head: the dished part above its tangent line and its straight flange (the
+  // cylinder of the flange length below the tangent line, which is part of the head as formed
+  // and of the tangent-to-tangent length), mm³ and mm² of the inner surface; its metal, mm³, and
+  // weight, kg.
+  double head_volume = 0.0, head_area = 0.0;
+  double head_metal_volume = 0.0, head_weight = 0.0;
+  double straight_flange = 0.0;               // mm
+  double vessel_volume = 0.0;                 // two heads and the cylinder between them, mm³
   double metal_volume = 0.0;                  // two heads and the cylinder, wall t, mm³
   double density = 0.0;                       // kg/m³
   double weight = 0.0;                        // kg
 };
 
 // The measures of a vessel with two exact standard heads of `preset` on a cylinder of `radius`
-// and `length`, wall `thickness`, of a material of `density` kg/m³.
+// and tangent-to-tangent `length`, wall `thickness`, of a material of `density` kg/m³, each head
+// formed with a straight flange of `straight_flange` mm (0 <= 2 × it < length, else InputError).
 VesselMeasures vessel_measures(const HeadPreset& preset, double radius, double length,
-                               double thickness, double density);
+                               double thickness, double density, double straight_flange = 0.0);
 
 }  // namespace polarform

@@ -292,7 +292,7 @@ VesselSolution solve_vessel(const VesselDesign& design) {
                            : solve_curvature_design(design, load);
   if (out.exact)
     out.measures = vessel_measures(*design.preset, design.radius, design.length, design.thickness,
-                                   design.density);
+                                   design.density, design.straight_flange);
   if (design.code) {
     out.code = check_vessel_code(*design.code, design.radius, design.thickness, design.pressure,
                                  out.exact ? design.preset : std::nullopt);

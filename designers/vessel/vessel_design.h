@@ -57,6 +57,7 @@ struct VesselDesign {
   std::optional<double> junction_kappa;
   std::optional<CodeInputs> code;  // check the wall by ASME VIII-1 (vessel_code_check.h)
   double density = 7850.0;         // kg/m³ of the wall material (steel), for the weight
+  double straight_flange = 0.0;    // mm: each exact head's straight flange (vessel_measures)
   double poisson = 0.3;            // Poisson's ratio ν of the wall (steel), for the edge bending
 
   bool operator==(const VesselDesign&) const = default;

@@ -160,6 +160,10 @@ void read_head(const XmlElementReader& r, VesselDesign& d, bool curvature_inputs
     if (!(h.knuckle < d.radius))
       r.fail("knuckle", "a knuckle radius below the vessel radius " + number(d.radius) + " mm");
   }
+  d.straight_flange = r.positive("straight-flange", 0.0, true);
+  if (!(2 * d.straight_flange < d.length))
+    r.fail("straight-flange",
+           "a straight flange below half the length " + number(d.length) + " mm");
   d.preset_targets = r.integer("targets", d.preset_targets);
   if (d.preset_targets < 1 || d.preset_targets > kMaxCurvatureTargets)
     r.fail("targets",
@@ -225,6 +229,7 @@ void to_millimetres(VesselProject& p, double unit) {
     d.preset->knuckle *= unit;
   }
   if (d.depth) *d.depth *= unit;
+  d.straight_flange *= unit;
   if (d.junction_kappa) *d.junction_kappa /= unit;
 }
 
@@ -408,6 +413,7 @@ std::string vessel_project_xml(const VesselProject& p) {
       attribute(out, "knuckle", d.preset->knuckle);
     }
     if (d.preset) attribute(out, "targets", std::to_string(d.preset_targets));
+    if (d.straight_flange > 0.0) attribute(out, "straight-flange", d.straight_flange);
     if (d.depth) attribute(out, "depth", *d.depth);
     if (d.volume) attribute(out, "volume", *d.volume);
     if (d.junction_kappa) attribute(out, "junction-kappa", *d.junction_kappa);

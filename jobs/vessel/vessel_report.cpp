@@ -214,9 +214,15 @@ json code_json(const VesselDesign& d, const VesselCodeCheck& c) {
 }
 
 json measures_json(const VesselMeasures& m) {
-  return {{"head_volume_mm3", m.head_volume},     {"head_area_mm2", m.head_area},
-          {"vessel_volume_mm3", m.vessel_volume}, {"metal_volume_mm3", m.metal_volume},
-          {"density_kg_per_m3", m.density},       {"weight_kg", m.weight}};
+  return {{"head_volume_mm3", m.head_volume},
+          {"head_area_mm2", m.head_area},
+          {"straight_flange_mm", m.straight_flange},
+          {"head_metal_volume_mm3", m.head_metal_volume},
+          {"head_weight_kg", m.head_weight},
+          {"vessel_volume_mm3", m.vessel_volume},
+          {"metal_volume_mm3", m.metal_volume},
+          {"density_kg_per_m3", m.density},
+          {"weight_kg", m.weight}};
 }
 
 }  // namespace

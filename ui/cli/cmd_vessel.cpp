@@ -103,8 +103,10 @@ void run(const VesselArgs& a) {
     std::printf("; wall %s\n", code->thickness_sufficient ? "sufficient" : "TOO THIN");
   }
   if (const auto& m = solution.measures)
-    std::printf("volume %.6g L, metal weight %.5g kg (%.5g kg/m3)\n", m->vessel_volume * 1e-6,
-                m->weight, m->density);
+    std::printf(
+        "volume %.6g L, metal weight %.5g kg (%.5g kg/m3); one head %.5g kg (straight flange "
+        "%.4g mm)\n",
+        m->vessel_volume * 1e-6, m->weight, m->density, m->head_weight, m->straight_flange);
   std::printf("wrote %zu files to %s (%.0f ms)\n", files.size(),
               std::filesystem::absolute(a.out).string().c_str(), r.seconds.total * 1e3);
 }

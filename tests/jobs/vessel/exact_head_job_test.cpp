@@ -188,6 +188,33 @@ TEST(ExactHeadJob, RingingSynthesisIsWarnedAbout) {
     EXPECT_EQ(x.find("inflection"), std::string::npos) << x;
 }
 
+// A straight flange of 40 mm: one formed head gains the cylinder π R² f, 2π R f and its ring of
+// wall; the vessel's volume and metal (tangent to tangent) do not change; saved and read back.
+TEST(ExactHeadJob, StraightFlangeCountsInTheFormedHead) {
+  const VesselJobResult plain = run_text(vessel_xml("<head preset=\"ellipsoidal\"/>", ""));
+  const VesselJobResult flanged =
+      run_text(vessel_xml("<head preset=\"ellipsoidal\" straight-flange=\"40\"/>", ""));
+  ASSERT_TRUE(plain.solved.solution.measures && flanged.solved.solution.measures);
+  const VesselMeasures& a = *plain.solved.solution.measures;
+  const VesselMeasures& b = *flanged.solved.solution.measures;
+  const double pi = std::numbers::pi;
+  EXPECT_NEAR(b.head_volume - a.head_volume, pi * 500 * 500 * 40, 1e-6);
+  EXPECT_NEAR(b.head_area - a.head_area, 2 * pi * 500 * 40, 1e-8);
+  EXPECT_NEAR(b.head_metal_volume - a.head_metal_volume, pi * (510 * 510 - 500 * 500) * 40, 1e-6);
+  EXPECT_NEAR(b.head_weight, b.head_metal_volume * 1e-9 * 7850, 1e-12);
+  EXPECT_EQ(b.vessel_volume, a.vessel_volume);
+  EXPECT_EQ(b.metal_volume, a.metal_volume);
+  const nlohmann::json j = vessel_report_json(flanged, {});
+  EXPECT_EQ(j["measures"]["straight_flange_mm"].get<double>(), 40.0);
+  std::vector<std::string> warnings;
+  const VesselProject p = parse_vessel_project(
+      vessel_xml("<head preset=\"ellipsoidal\" straight-flange=\"40\"/>", ""), "f.xml", warnings);
+  EXPECT_EQ(p.design.straight_flange, 40.0);
+  EXPECT_EQ(parse_vessel_project(vessel_project_xml(p), "again.xml", warnings), p);
+  EXPECT_THROW(run_text(vessel_xml("<head preset=\"ellipsoidal\" straight-flange=\"800\"/>", "")),
+               InputError);
+}
+
 // An end's curvature instead of R'' (R'' = R − κR² at R' = 0), and the vessel by its outside
 // diameter (inside radius = OD/2 − t).
 TEST(ExactHeadJob, EndCurvatureAndOutsideDiameterAreRead) {
