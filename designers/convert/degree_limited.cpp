@@ -28,9 +28,9 @@ constexpr int kMaxSpans = 20000;
 // profile; the minimax fits take 8 Lawson steps (more gain little).
 constexpr double kSlide = 1e-5;
 constexpr int kLawsonSteps = 8;
-// The table's span errors (2·(2p + 2) + 1 points per span) must meet kShare·tol: the final
-// measurement against R samples finer.
-constexpr double kShare = 0.95;
+// The table's span errors (2·(2p + 2) + 1 points per span) must meet kShare·tol; the final
+// measurement against R (every local maximum refined) decides.
+constexpr double kShare = 0.99;
 constexpr int kPlacementRounds = 6;
 constexpr std::size_t kRemovalTries = 10;
 constexpr int kInsertionRounds = 200;
@@ -63,9 +63,9 @@ std::optional<double> fold(const NurbsCurve2d& C, const std::vector<double>& bre
   return std::nullopt;
 }
 
-// The result, its error measured against R itself over every span (conversion_error.h), each
-// local maximum of the samples among the 16 largest refined; `at` receives the parameter of the
-// largest error (infinite at a fold).
+// The result, its error measured against R itself over every span (conversion_error.h), 8 + 1
+// samples per span and every local maximum of the samples refined by golden section; `at` receives
+// the parameter of the largest error (infinite at a fold).
 LimitedCurve measure(const SplineSpace& s, const PolarFunction& R, const Eigen::MatrixXd& coefs,
                      double* at = nullptr) {
   LimitedCurve out{s.curve(coefs), 0, 0, 0};
@@ -76,7 +76,7 @@ LimitedCurve measure(const SplineSpace& s, const PolarFunction& R, const Eigen::
     return out;
   }
   const Maximum m = refined_maximum([&](double u) { return radial_error_at(out.curve, R, u, u); },
-                                    s.breaks(), 8, 16);
+                                    s.breaks(), 8, 4 * s.spans());
   double psi = 0.0, d[2];
   radial_error_at(out.curve, R, m.at, m.at, &psi);
   psi = R.closed()
