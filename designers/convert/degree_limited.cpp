@@ -31,7 +31,9 @@ constexpr int kLawsonSteps = 8;
 // The table's span errors (2·(2p + 2) + 1 points per span) must meet kShare·tol; the final
 // measurement against R (every local maximum refined) decides.
 constexpr double kShare = 0.99;
-constexpr int kPlacementRounds = 6;
+// Rounds of knot placement on plain fits (one solve each): the equidistribution converges slowly,
+// 30 rounds give about 4 % fewer control points than 6 on the examples.
+constexpr int kPlacementRounds = 30;
 constexpr std::size_t kRemovalTries = 10;
 constexpr int kInsertionRounds = 200;
 
@@ -115,7 +117,8 @@ std::vector<double> need(const Fit& f) {
   const std::vector<double>& b = f.space.breaks();
   std::vector<double> mass;
   for (double e : f.errors) mass.push_back(std::pow(e, 1.0 / (p + 1)));
-  const double mean = std::accumulate(mass.begin(), mass.end(), 0.0) / (b.back() - b.front());
+  double mean = std::accumulate(mass.begin(), mass.end(), 0.0) / (b.back() - b.front());
+  if (!(mean > 0)) mean = 1.0;  // an exact fit: spans of equal length
   for (std::size_t j = 0; j < mass.size(); ++j)
     mass[j] = std::max(mass[j], 0.1 * mean * (b[j + 1] - b[j]));
   return mass;

@@ -112,7 +112,6 @@ Eigen::MatrixXd solve(const SplineSpace& space, const std::vector<Sample>& ss,
           triplets.emplace_back(2 * J + r, 2 * K + c, M(r, c));
           triplets.emplace_back(2 * K + c, 2 * J + r, M(r, c));
         }
-      (void)K;
     }
   // The diagonal blocks' diagonals were added twice.
   for (int J = 0; J < n; ++J)

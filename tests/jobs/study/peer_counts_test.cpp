@@ -11,28 +11,28 @@
 // Degree 3, ours / OCCT deg 3 at ε = 1e-2, 1e-3, 1e-4 (before: uniform knots in ψ; after: knots by
 // need, sliding minimax fit):
 //                                             before                     after
-//   roller                                    37/31   63/51   165/87   16/31   30/51   49/87
-//   flat_faced                                46/33   76/69   141/126  16/33   25/69   45/126
-//   offset_roller                             46/33   148/106 390/310  20/33   32/106  55/310
-//   polynomial                                33/25   60/50   124/86   18/25   27/50   48/86
-//   scca_dynamics                             37/29   69/58   148/111  14/29   28/58   44/111
-//   oscillating_roller                        40/34   81/67   147/139  16/34   30/67   54/139
-//   oscillating_flat_faced                    137/84  197/197 549/451  19/84   30/197  56/451
-//   grooved                                   32/26   54/42   114/72   18/26   27/42   49/72
-//   conjugate (grooved's)                     32/26   54/42   114/72   18/26   27/42   49/72
-//   hemispherical                             13/13   21/20   35/33    10/13   17/20   32/33
-//   ellipsoidal_2_1                           38/32   58/64   104/114  17/32   27/64   51/114
-//   torispherical_100_6                       116/84  195/173 338/285  27/84   49/173  87/285
-//   custom_curvature                          30/30   51/48   87/81    19/30   35/48   58/81
-//   minimum_stress_2_1_depth                  38/33   64/61   112/105  16/33   29/61   51/105
-//   harmonic_modified_sine_roller             —       —       —        18/28   28/106  47/325
-//   modified_trapezoid_345_flat               —       —       —        15/28   26/61   43/111
-//   constant_acceleration_cubic_offset_roller —       —       —        19/43   31/177  58/437
-//   cycloidal_harmonic_flat                   —       —       —        16/58   30/136  53/306
-//   345_no_dwell_roller                       —       —       —        12/17   21/31   37/43
-//   ellipsoidal_3_1                           —       —       —        19/58   32/116  57/208
-//   torispherical_80_10                       —       —       —        23/61   42/112  74/203
-//   ellipsoidal_1.5_1_degree_4                —       —       —        14/20   21/41   41/67
+//   roller                                    37/31   63/51   165/87   17/31   26/51   48/87
+//   flat_faced                                46/33   76/69   141/126  15/33   23/69   40/126
+//   offset_roller                             46/33   148/106 390/310  18/33   30/106  48/310
+//   polynomial                                33/25   60/50   124/86   18/25   26/50   47/86
+//   scca_dynamics                             37/29   69/58   148/111  17/29   25/58   43/111
+//   oscillating_roller                        40/34   81/67   147/139  17/34   29/67   50/139
+//   oscillating_flat_faced                    137/84  197/197 549/451  17/84   33/197  51/451
+//   grooved                                   32/26   54/42   114/72   17/26   27/42   47/72
+//   conjugate (grooved's)                     32/26   54/42   114/72   17/26   27/42   47/72
+//   hemispherical                             13/13   21/20   35/33    10/13   17/20   31/33
+//   ellipsoidal_2_1                           38/32   58/64   104/114  17/32   28/64   50/114
+//   torispherical_100_6                       116/84  195/173 338/285  25/84   46/173  82/285
+//   custom_curvature                          30/30   51/48   87/81    20/30   34/48   60/81
+//   minimum_stress_2_1_depth                  38/33   64/61   112/105  16/33   31/61   51/105
+//   harmonic_modified_sine_roller             —       —       —        16/28   25/106  44/325
+//   modified_trapezoid_345_flat               —       —       —        13/28   23/61   41/111
+//   constant_acceleration_cubic_offset_roller —       —       —        18/43   31/177  50/437
+//   cycloidal_harmonic_flat                   —       —       —        15/58   29/136  49/306
+//   345_no_dwell_roller                       —       —       —        12/17   21/31   36/43
+//   ellipsoidal_3_1                           —       —       —        19/58   29/116  54/208
+//   torispherical_80_10                       —       —       —        22/61   40/112  72/203
+//   ellipsoidal_1.5_1_degree_4                —       —       —        14/20   24/41   40/67
 #include <gtest/gtest.h>
 
 #include <array>
