@@ -212,6 +212,7 @@ LimitedCurve approximate_polar_curve(const PolarFunction& R, int degree, double 
                    std::clamp<int>(static_cast<int>(std::min(n, 1e9)), fewest, kMaxSpans), fixed),
                periodic, table, p, plain);
     mass = need(f);
+    if (n >= kMaxSpans) break;  // the span budget decides (step 2)
   }
 
   // 2. The fewest spans on that density whose minimax fit meets the tolerance: grown until one
