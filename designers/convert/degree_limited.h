@@ -17,8 +17,13 @@ struct LimitedCurve {
   int control_points = 0;
 };
 
-// Least squares on uniform knots in ψ (periodic when R is closed), the number of spans grown until
-// the measured radial error meets tol. Throws NumericalError if 20000 spans do not reach it.
+// A tolerance-driven least-squares B-spline with knots placed by need (periodic, C^{p-1} across
+// the seam, when R is closed; an open one keeps R's end points): knots equidistributing the
+// measured error (de Boor), a knot wherever a derivative of order <= min(p, 3) of R jumps, the
+// fewest spans on that density whose minimax fit meets tol, knot removal by refit, then the
+// result measured against R itself (a span split where it misses). The fits let the curve slide
+// along the profile and are pushed toward the minimax radial error (profile_fit.h). Throws
+// NumericalError if 20000 spans do not reach tol.
 LimitedCurve approximate_polar_curve(const PolarFunction& R, int degree, double tol);
 
 // Interpolation of N points R(ψ_k)(cos ψ_k, sin ψ_k) equally spaced in ψ, with the fewest N (found

@@ -1,0 +1,199 @@
+#include "designers/convert/profile_fit.h"
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "src/error.h"
+
+namespace polarform {
+
+namespace {
+
+struct Sample {
+  double t;
+  Eigen::Vector2d point, direction;  // radial error ≈ direction · (C(t) − point)
+  Eigen::Vector2d anchor;            // where the full-distance share pulls C(t)
+  int first;
+  double N[kMaxDegree + 1];
+  double weight = 1.0;
+};
+
+// A control value held fixed: an open (clamped) curve's end points are the profile's, so that the
+// curve, free to slide along the profile elsewhere, neither ends short of it nor runs past it.
+struct Held {
+  int index;
+  Eigen::Vector2d value;
+};
+
+std::vector<Held> held(const SplineSpace& space, const ProfileTable& R) {
+  if (space.periodic()) return {};
+  std::vector<Held> out;
+  for (int end = 0; end < 2; ++end) {
+    const double t = end == 0 ? space.breaks().front() : space.breaks().back();
+    out.push_back(
+        {end == 0 ? 0 : space.size() - 1, R(t) * Eigen::Vector2d(std::cos(t), std::sin(t))});
+  }
+  return out;
+}
+
+std::vector<Sample> samples(const SplineSpace& space, const ProfileTable& R, int per_span) {
+  std::vector<Sample> out;
+  const std::vector<double>& b = space.breaks();
+  out.reserve(static_cast<std::size_t>(space.spans() * per_span));
+  for (int j = 0; j < space.spans(); ++j)
+    for (int k = 0; k < per_span; ++k) {
+      Sample s;
+      s.t = b[j] + (b[j + 1] - b[j]) * (k + 0.5) / per_span;
+      double d[2];
+      R.derivatives(s.t, d);
+      const Eigen::Vector2d er(std::cos(s.t), std::sin(s.t)), et(-er.y(), er.x());
+      s.point = d[0] * er;
+      // ρ moves by e_r·δ and ψ by e_θ·δ / R, so |ρ − R(ψ)| by (e_r − R'/R e_θ)·δ.
+      s.direction = er - d[1] / d[0] * et;
+      s.anchor = s.point;
+      s.first = space.basis(s.t, s.N);
+      out.push_back(s);
+    }
+  return out;
+}
+
+// Weighted least squares on the samples (normal equations, sparse Cholesky; the unknowns x_j, y_j
+// interleaved so that the system is banded apart from the periodic wrap).
+Eigen::MatrixXd solve(const SplineSpace& space, const std::vector<Sample>& ss,
+                      const std::vector<Held>& hold, double slide,
+                      Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>& solver, bool analysed) {
+  const int p = space.degree(), n = space.size();
+  std::vector<Eigen::Matrix2d> band(static_cast<std::size_t>(n) * (p + 1), Eigen::Matrix2d::Zero());
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(2 * n);
+  for (const Sample& s : ss) {
+    const Eigen::Matrix2d B =
+        s.weight * (s.direction * s.direction.transpose() + slide * Eigen::Matrix2d::Identity());
+    const Eigen::Vector2d Bp =
+        s.weight * (s.direction * s.direction.dot(s.point) + slide * s.anchor);
+    for (int j = 0; j <= p; ++j) {
+      const int J = (s.first + j) % n;
+      rhs.segment<2>(2 * J) += s.N[j] * Bp;
+      // Upper band only: block (J, J + d) for d = 0..p - j.
+      for (int k = j; k <= p; ++k)
+        band[static_cast<std::size_t>(J) * (p + 1) + (k - j)] += s.N[j] * s.N[k] * B;
+    }
+  }
+  // Held values: their columns move to the right-hand side, their rows become x_J = value.
+  for (const Held& h : hold) {
+    for (int J = 0; J < n; ++J)
+      for (int d = 0; d <= p; ++d) {
+        const int K = (J + d) % n;
+        Eigen::Matrix2d& M = band[static_cast<std::size_t>(J) * (p + 1) + d];
+        if (J == h.index && K == h.index) {
+          M.setIdentity();
+          rhs.segment<2>(2 * J) = h.value;
+        } else if (K == h.index) {
+          rhs.segment<2>(2 * J) -= M * h.value;
+          M.setZero();
+        } else if (J == h.index) {
+          rhs.segment<2>(2 * K) -= M.transpose() * h.value;
+          M.setZero();
+        }
+      }
+  }
+  std::vector<Eigen::Triplet<double>> triplets;
+  triplets.reserve(band.size() * 8);
+  for (int J = 0; J < n; ++J)
+    for (int d = 0; d <= p; ++d) {
+      const Eigen::Matrix2d& M = band[static_cast<std::size_t>(J) * (p + 1) + d];
+      const int K = (J + d) % n;
+      for (int r = 0; r < 2; ++r)
+        for (int c = 0; c < 2; ++c) {
+          if (d == 0 && c < r) continue;  // the diagonal block's lower half mirrors its upper
+          triplets.emplace_back(2 * J + r, 2 * K + c, M(r, c));
+          triplets.emplace_back(2 * K + c, 2 * J + r, M(r, c));
+        }
+    }
+  // The diagonal blocks' diagonals were added twice.
+  for (int J = 0; J < n; ++J)
+    for (int r = 0; r < 2; ++r)
+      triplets.emplace_back(2 * J + r, 2 * J + r,
+                            -band[static_cast<std::size_t>(J) * (p + 1)](r, r));
+  Eigen::SparseMatrix<double> A(2 * n, 2 * n);
+  A.setFromTriplets(triplets.begin(), triplets.end());
+  if (!analysed) solver.analyzePattern(A);
+  solver.factorize(A);
+  if (solver.info() != Eigen::Success) throw NumericalError("degree-limited fit: singular system");
+  const Eigen::VectorXd x = solver.solve(rhs);
+  return Eigen::Map<const Eigen::MatrixXd>(x.data(), 2, n);
+}
+
+Eigen::Vector2d curve_point(const Sample& s, const Eigen::MatrixXd& coefs, int p, int n) {
+  Eigen::Vector2d c = Eigen::Vector2d::Zero();
+  for (int j = 0; j <= p; ++j) c += s.N[j] * coefs.col((s.first + j) % n);
+  return c;
+}
+
+// The sample relinearised at the curve's current point c = C(t) (a Gauss–Newton step on the
+// radial error): its true radial error f and gradient g there, the target c − f g / |g|², the
+// full-distance share anchored at c. Returns |f|.
+double relinearise(Sample& s, const Eigen::Vector2d& c, const ProfileTable& R) {
+  constexpr double kTwoPi = 2 * std::numbers::pi;
+  const double rho = c.norm();
+  const double psi = s.t + std::remainder(std::atan2(c.y(), c.x()) - s.t, kTwoPi);
+  double d[2];
+  R.derivatives(psi, d);
+  const Eigen::Vector2d er(std::cos(psi), std::sin(psi)), et(-er.y(), er.x());
+  const double f = rho - d[0];
+  s.direction = er - d[1] / rho * et;
+  s.point = c - f * s.direction / s.direction.squaredNorm();
+  s.anchor = c;
+  return std::abs(f);
+}
+
+}  // namespace
+
+// NURBS Book A9.7 (least squares) on radial-error directions (Wang, Pottmann & Liu 2006), then
+// Lawson 1961: w_i ← w_i·|r_i|, the best max residual kept.
+Eigen::MatrixXd fit_profile(const SplineSpace& space, const ProfileTable& R,
+                            const ProfileFitOptions& options) {
+  std::vector<Sample> ss = samples(space, R, options.per_span);
+  const std::vector<Held> hold = held(space, R);
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
+  Eigen::MatrixXd coefs = solve(space, ss, hold, options.slide, solver, false), best = coefs;
+  const int p = space.degree(), n = space.size();
+  double best_max = std::numeric_limits<double>::infinity();
+  std::vector<double> r(ss.size(), 0.0);
+  for (int step = 0; step <= options.lawson_steps; ++step) {
+    if (step > 0) coefs = solve(space, ss, hold, options.slide, solver, true);
+    double worst = 0.0, sum = 0.0;
+    for (std::size_t i = 0; i < ss.size(); ++i) {
+      r[i] = relinearise(ss[i], curve_point(ss[i], coefs, p, n), R);
+      worst = std::max(worst, r[i]);
+    }
+    if (worst < best_max) best_max = worst, best = coefs;
+    if (step == options.lawson_steps || worst == 0.0) break;
+    if (!options.reweight) continue;
+    for (std::size_t i = 0; i < ss.size(); ++i) sum += ss[i].weight * r[i];
+    const double mean = sum / static_cast<double>(ss.size());
+    for (std::size_t i = 0; i < ss.size(); ++i)
+      ss[i].weight = std::max(ss[i].weight * r[i] / mean, 1e-6);
+  }
+  return best;
+}
+
+std::vector<double> span_errors(const SplineSpace& space, const Eigen::MatrixXd& coefs,
+                                const ProfileTable& R, int per_span) {
+  constexpr double kTwoPi = 2 * std::numbers::pi;
+  const std::vector<double>& b = space.breaks();
+  std::vector<double> out(static_cast<std::size_t>(space.spans()), 0.0);
+  for (int j = 0; j < space.spans(); ++j)
+    for (int k = 0; k <= per_span; ++k) {
+      const double t = b[j] + (b[j + 1] - b[j]) * k / per_span;
+      const Eigen::Vector2d c = space.point(coefs, t);
+      const double psi = t + std::remainder(std::atan2(c.y(), c.x()) - t, kTwoPi);
+      out[j] = std::max(out[j], std::abs(c.norm() - R(psi)));
+    }
+  return out;
+}
+
+}  // namespace polarform

@@ -1,0 +1,39 @@
+// A dense table of a polar function for the many evaluations of an iterative fit: R, R' and R''
+// at nodes spaced at most 2π/4096 apart (R's breakpoints among them, each side's derivatives
+// taken from inside the interval), evaluated between nodes by quintic Hermite interpolation, so
+// that no interval straddles a breakpoint. Accurate to far below any tolerance the converter
+// takes; the converter still verifies its results against R itself.
+#pragma once
+
+#include <vector>
+
+#include "designers/convert/polar_function.h"
+
+namespace polarform {
+
+class ProfileTable {
+ public:
+  explicit ProfileTable(const PolarFunction& R, int intervals = 4096);
+
+  // R(ψ) and R'(ψ) into out[0..1]; ψ wrapped into the domain (closed) or clamped to it (open).
+  void derivatives(double psi, double* out) const;
+  double operator()(double psi) const {
+    double d[2];
+    derivatives(psi, d);
+    return d[0];
+  }
+  double wrap(double psi) const;
+
+ private:
+  struct Node {
+    double left[3], right[3];  // R, R', R'' from the interval before / after the node
+  };
+  double start_, end_;
+  bool closed_;
+  std::vector<double> at_;
+  std::vector<Node> nodes_;
+  double bucket_width_;
+  std::vector<std::size_t> bucket_;  // index of the last node at or before each bucket's start
+};
+
+}  // namespace polarform

@@ -1,0 +1,130 @@
+// The degree-limited profile (issue 14, profile_deg3.dxf and --max-degree N): on the plate-cam
+// examples at several degrees and tolerances the result meets the tolerance by the tests' own
+// dense measurement, a closed profile is periodic and C^(p−1) across the seam, an open one keeps
+// the profile's end points, knots placed by need beat the uniform "spline through points" export,
+// and a breakpoint where R's third derivative jumps is a knot. (The counts against Open CASCADE
+// for every example are asserted in tests/jobs/study/peer_counts_test.cpp.)
+#include "designers/convert/degree_limited.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "designers/cam/contour_polar_function.h"
+#include "src/error.h"
+#include "tests/support/designers/contour_distance.h"
+#include "tests/support/designers/example_cams.h"
+
+namespace polarform {
+namespace {
+
+const std::vector<std::string> kPlateCams = {"roller", "flat_faced", "offset_roller", "polynomial"};
+
+PolarFunction contour(const std::string& name) {
+  return cam_polar_function(make_plate_cam(test::example_cam_design(name)));
+}
+
+double dense_distance(const NurbsCurve2d& c, const PolarFunction& R) {
+  return test::max_contour_distance([&](double u) { return c(u); }, c.front(), c.back(), R, 40000);
+}
+
+// A smooth open profile: r = 50 + 5 cos 3ψ on [0, π/2].
+PolarFunction open_profile() {
+  PolarFunction R;
+  R.start = 0.0;
+  R.end = std::numbers::pi / 2;
+  R.derivatives = [](double t, int d, double* out) {
+    const double c = std::cos(3 * t), s = std::sin(3 * t);
+    const double all[4] = {50 + 5 * c, -15 * s, -45 * c, 135 * s};
+    for (int k = 0; k <= d; ++k) out[k] = all[k];
+  };
+  return R;
+}
+
+TEST(DegreeLimited, MeetsTheToleranceByDenseSamplingAtEveryDegree) {
+  for (const std::string& name : kPlateCams)
+    for (int degree : {2, 3, 5})
+      for (double tol : {1e-2, 1e-4}) {
+        SCOPED_TRACE(name + " degree " + std::to_string(degree) + " at " + std::to_string(tol));
+        const PolarFunction R = contour(name);
+        const LimitedCurve c = approximate_polar_curve(R, degree, tol);
+        EXPECT_EQ(c.curve.degree(), degree);
+        EXPECT_EQ(c.control_points, c.curve.size());
+        EXPECT_LE(c.max_radial_error, tol);
+        EXPECT_LE(c.max_normal_error, c.max_radial_error);
+        EXPECT_LE(dense_distance(c.curve, R), tol);
+      }
+}
+
+TEST(DegreeLimited, ClosedProfileIsPeriodicAndSmoothAcrossTheSeam) {
+  for (const std::string& name : kPlateCams)
+    for (int degree : {3, 5}) {
+      SCOPED_TRACE(name + " degree " + std::to_string(degree));
+      const LimitedCurve c = approximate_polar_curve(contour(name), degree, 1e-3);
+      const auto start = c.curve.derivatives(c.curve.front(), degree - 1);
+      const auto end = c.curve.derivatives(c.curve.back(), degree - 1);
+      for (int k = 0; k < degree; ++k) {
+        // Derivative k scales like R·(spans / 2π)^k: compare relative to its size.
+        const double scale = std::max(1.0, start[k].norm());
+        EXPECT_LE((start[k] - end[k]).norm(), 1e-9 * scale) << "derivative " << k;
+      }
+    }
+}
+
+TEST(DegreeLimited, OpenProfileKeepsItsEndPoints) {
+  const PolarFunction R = open_profile();
+  for (double tol : {1e-2, 1e-3, 1e-4}) {
+    SCOPED_TRACE(tol);
+    const LimitedCurve c = approximate_polar_curve(R, 3, tol);
+    EXPECT_LE(dense_distance(c.curve, R), tol);
+    for (double t : {R.start, R.end}) {
+      const Eigen::Vector2d p = R(t) * Eigen::Vector2d(std::cos(t), std::sin(t));
+      EXPECT_LE((c.curve(t) - p).norm(), 1e-9);
+    }
+  }
+}
+
+TEST(DegreeLimited, KnotsByNeedBeatTheUniformSplineThroughPoints) {
+  for (const std::string& name : kPlateCams)
+    for (double tol : {1e-2, 1e-3, 1e-4}) {
+      SCOPED_TRACE(name + " at " + std::to_string(tol));
+      const PolarFunction R = contour(name);
+      EXPECT_LT(approximate_polar_curve(R, 3, tol).control_points,
+                0.75 * interpolate_polar_curve(R, 3, tol).control_points);
+    }
+}
+
+TEST(DegreeLimited, AJumpOfTheThirdDerivativeIsAKnotAPlainBreakpointNeedNotBe) {
+  // r = 50 + 2|sin ψ|³, closed: C2, its third derivative jumps (−12 to 12) at ψ = π; the
+  // breakpoint listed at ψ = 1 is smooth.
+  PolarFunction R;
+  R.start = 0.0;
+  R.end = 2 * std::numbers::pi;
+  R.breakpoints = {1.0, std::numbers::pi};
+  R.derivatives = [](double t, int d, double* out) {
+    const double s = std::sin(t), c = std::cos(t), sigma = t < std::numbers::pi ? 1.0 : -1.0;
+    const double all[4] = {50 + 2 * sigma * s * s * s, 6 * sigma * s * s * c,
+                           2 * sigma * (6 * s * c * c - 3 * s * s * s),
+                           2 * sigma * (6 * c * c * c - 21 * s * s * c)};
+    for (int k = 0; k <= d; ++k) out[k] = all[k];
+  };
+  const LimitedCurve c = approximate_polar_curve(R, 3, 1e-4);
+  EXPECT_LE(dense_distance(c.curve, R), 1e-4);
+  bool at_pi = false, at_one = false;
+  for (const Breakpoint& k : breakpoints(c.curve.knots())) {
+    at_pi = at_pi || k.value == std::numbers::pi;
+    at_one = at_one || k.value == 1.0;
+  }
+  EXPECT_TRUE(at_pi);
+  EXPECT_FALSE(at_one);
+}
+
+TEST(DegreeLimited, RejectsBadArguments) {
+  const PolarFunction R = contour("roller");
+  EXPECT_THROW(approximate_polar_curve(R, 0, 1e-3), InputError);
+  EXPECT_THROW(approximate_polar_curve(R, 3, 0.0), InputError);
+}
+
+}  // namespace
+}  // namespace polarform
