@@ -147,10 +147,11 @@ PlateProfile plate_profile(const CamProject& project, const CamConversionStage& 
                            const CamJobOptions& options, std::vector<std::string>& warnings) {
   PlateProfile p{stage.conversion.curve, std::nullopt, std::nullopt};
   // The degree-limited profile is an extra: when its degree cannot reach the tolerance the exact
-  // profile still stands, so the job says so instead of failing.
+  // profile still stands, so the job says so instead of failing. At the exact one's tolerance (a
+  // conjugate pair's is tighter), like the capped one.
   if (options.with_limited) try {
       p.limited = approximate_polar_curve(stage.profile_function, options.limited_degree,
-                                          project.conversion.tolerance);
+                                          stage.conversion.tolerance);
     } catch (const NumericalError& e) {
       warnings.push_back("degree-" + std::to_string(options.limited_degree) +
                          " profile not written: " + e.what());
