@@ -90,10 +90,8 @@ ExactHead exact_head(const HeadPreset& preset, double radius) {
     case HeadKind::flat: {
       // The knuckle about (R − r, 0) turns by α to T, the cone runs straight to the apex (a flat
       // head's: α = 90°, the plate z = r).
-      const bool flat = preset.kind == HeadKind::flat;
-      const double alpha = flat ? kPi / 2 : preset.half_angle, rk = preset.knuckle;
-      const ConeGeometry g =
-          flat ? flat_head_geometry(radius, rk) : cone_geometry(radius, alpha, rk);
+      const double rk = preset.knuckle;
+      const auto [alpha, g] = knuckled_head_geometry(preset, radius);
       const Eigen::Vector2d t{g.tangent_x, g.tangent_z}, apex{0.0, g.apex_z};
       const Eigen::Vector2d mirror{-1.0, 1.0};
       if (rk > 0.0) arcs.push_back(circular_arc({g.knuckle_centre_x, 0.0}, rk, 0.0, alpha));

@@ -121,6 +121,11 @@ ConeGeometry flat_head_geometry(double radius, double knuckle) {
   return knuckled_line(radius, kPi / 2, knuckle);
 }
 
+std::pair<double, ConeGeometry> knuckled_head_geometry(const HeadPreset& preset, double radius) {
+  if (preset.kind == HeadKind::flat) return {kPi / 2, flat_head_geometry(radius, preset.knuckle)};
+  return {preset.half_angle, cone_geometry(radius, preset.half_angle, preset.knuckle)};
+}
+
 HeadShape head_shape(const HeadPreset& preset, double radius) {
   if (!(radius > 0.0 && std::isfinite(radius)))
     throw InputError("head preset: radius " + to_text(radius) + " mm, expected > 0");
@@ -172,9 +177,8 @@ HeadShape head_shape(const HeadPreset& preset, double radius) {
     case HeadKind::conical:
     case HeadKind::flat: {
       const bool flat = preset.kind == HeadKind::flat;
-      const double alpha = flat ? kPi / 2 : preset.half_angle, rk = preset.knuckle;
-      const ConeGeometry g =
-          flat ? flat_head_geometry(radius, rk) : cone_geometry(radius, alpha, rk);
+      const double rk = preset.knuckle;
+      const auto [alpha, g] = knuckled_head_geometry(preset, radius);
       // The cone's line has the outward normal (cos α, sin α) on side A, (−cos α, sin α) on B.
       const double joint = std::atan2(g.tangent_z, g.tangent_x);
       const double distance =

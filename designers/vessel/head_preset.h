@@ -7,6 +7,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "designers/convert/polar_function.h"
@@ -55,6 +56,8 @@ ConeGeometry cone_geometry(double radius, double half_angle, double knuckle);
 // The flanged flat head's: the same with α = 90° (the plate at z = r). Throws InputError unless
 // 0 < r < R.
 ConeGeometry flat_head_geometry(double radius, double knuckle);
+// A conical or flat preset's: its half angle α (90° for a flat head) and its geometry.
+std::pair<double, ConeGeometry> knuckled_head_geometry(const HeadPreset& preset, double radius);
 
 struct CurvatureJump {
   double theta = 0.0;         // rad

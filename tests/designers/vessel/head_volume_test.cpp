@@ -9,36 +9,19 @@
 
 #include "designers/vessel/curvature_synthesis.h"
 #include "designers/vessel/vessel_design.h"
+#include "tests/support/designers/spheroid_meridian.h"
 
 namespace polarform {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-// The half spheroid x²/a² + z²/b² = 1 as a polar function R(θ) = ab / √(b²cos²θ + a²sin²θ).
-PolarFunction spheroid(double a, double b) {
-  PolarFunction f;
-  f.start = 0.0;
-  f.end = kPi;
-  f.derivatives = [a, b](double t, int d, double* out) {
-    const auto R = [&](double u) {
-      return a * b /
-             std::sqrt(b * b * std::cos(u) * std::cos(u) + a * a * std::sin(u) * std::sin(u));
-    };
-    out[0] = R(t);
-    if (d >= 1) {  // R' = −R³ (a² − b²) sin 2θ / (2 a² b²)
-      out[1] = -std::pow(out[0], 3) * (a * a - b * b) * std::sin(2 * t) / (2 * a * a * b * b);
-    }
-  };
-  return f;
-}
-
 TEST(HeadVolume, StandardHeadsAgainstClosedForms) {
-  const HeadMeasures sphere = polar_head_measures(spheroid(500, 500));
+  const HeadMeasures sphere = polar_head_measures(test::spheroid_meridian(500, 500));
   EXPECT_NEAR(sphere.volume, 2 * kPi / 3 * std::pow(500, 3), 1e-12 * std::pow(500, 3));
   EXPECT_NEAR(sphere.area, 2 * kPi * 500 * 500, 1e-12 * 500 * 500);
   for (double b : {250.0, 125.0, 800.0}) {
-    const HeadMeasures m = polar_head_measures(spheroid(500, b));
+    const HeadMeasures m = polar_head_measures(test::spheroid_meridian(500, b));
     const HeadMeasures exact = ellipsoidal_head_measures(500, b);
     EXPECT_NEAR(m.volume, exact.volume, 1e-10 * exact.volume) << b;
     EXPECT_NEAR(m.area, exact.area, 1e-10 * exact.area) << b;

@@ -12,24 +12,12 @@
 #include "designers/vessel/membrane_stress.h"
 #include "designers/vessel/vessel_design.h"
 #include "src/error.h"
+#include "tests/support/designers/spheroid_meridian.h"
 
 namespace polarform {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-PolarFunction spheroid(double a, double b) {
-  PolarFunction f;
-  f.start = 0.0;
-  f.end = kPi;
-  f.derivatives = [a, b](double t, int d, double* out) {
-    const double c = std::cos(t), s = std::sin(t);
-    out[0] = a * b / std::sqrt(b * b * c * c + a * a * s * s);
-    if (d >= 1)
-      out[1] = -std::pow(out[0], 3) * (a * a - b * b) * std::sin(2 * t) / (2 * a * a * b * b);
-  };
-  return f;
-}
 
 // On x = a cos t, z = b sin t: the normal's angle against the axis is atan2(b cos t, a sin t) and
 // the arc length from t = 0 is integrated independently (Simpson, 200 000 steps in t).
@@ -40,9 +28,9 @@ TEST(TargetPlacement, SpheroidAgainstItsParametricForm) {
     targets.push_back({0.0, 0.0, 1.0, TargetPlace::meridian_angle, phi_deg * kPi / 180});
   for (double s : {50.0, 300.0, 600.0})
     targets.push_back({0.0, 0.0, 1.0, TargetPlace::arc_length, s});
-  place_targets(targets, spheroid(a, b));
+  place_targets(targets, test::spheroid_meridian(a, b));
   const auto parameter = [&](double theta) {  // t of the point R(θ)(cosθ, sinθ)
-    const double R = spheroid(a, b)(theta);
+    const double R = test::spheroid_meridian(a, b)(theta);
     return std::atan2(R * std::sin(theta) / b, R * std::cos(theta) / a);
   };
   for (const CurvatureTarget& t : targets) {
@@ -62,7 +50,7 @@ TEST(TargetPlacement, SpheroidAgainstItsParametricForm) {
   }
   std::vector<CurvatureTarget> beyond = {{0.0, 0.0, 1.0, TargetPlace::arc_length, 1e5}};
   try {
-    place_targets(beyond, spheroid(a, b));
+    place_targets(beyond, test::spheroid_meridian(a, b));
     FAIL() << "accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("curvature target 1 at s = 100000 mm is not on the head"),
