@@ -184,7 +184,24 @@ void VesselWorkspace::draw_summary() {
     ImGui::Text("depth %s mm, smallest R %s mm at %s°", field(f, "head", "depth_mm").c_str(),
                 field(f, "synthesis", "min_radius_mm").c_str(),
                 field(f, "synthesis", "min_radius_at_deg").c_str());
+    const nlohmann::ordered_json& choice = f.at("synthesis").at("smoothing_choice");
+    ImGui::Text("smoothing λ %s (%s, %s trials%s); targets placed in %s rounds",
+                field(f, "synthesis", "smoothing").c_str(),
+                choice.at("rule").get<std::string>().c_str(), choice.at("trials").dump().c_str(),
+                choice.at("met").get<bool>() ? "" : ", rule not met",
+                field(f, "synthesis", "placement_rounds").c_str());
   }
+  if (!f.at("design_measures").is_null())
+    ImGui::Text("head volume %s mm³, inner area %s mm²",
+                field(f, "design_measures", "head_volume_mm3").c_str(),
+                field(f, "design_measures", "head_area_mm2").c_str());
+  if (!f.at("flat_plate").is_null())
+    ImGui::TextWrapped(
+        "flat plate (radius %s mm) bends: %s MPa at its edge if clamped, %s MPa at "
+        "its centre if simply supported",
+        field(f, "flat_plate", "plate_radius_mm").c_str(),
+        field(f, "flat_plate", "clamped_edge_stress_mpa").c_str(),
+        field(f, "flat_plate", "simply_supported_centre_stress_mpa").c_str());
   ImGui::Text("junction: κ = %s 1/mm, slope %s°",
               field(f, "head", "junction_curvature_per_mm").c_str(),
               field(f, "head", "junction_slope_deg").c_str());
