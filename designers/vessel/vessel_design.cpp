@@ -111,9 +111,13 @@ std::vector<std::string> warnings_for(const VesselSolution& s, const VesselDesig
         short_text(s.flat_plate->simply_supported_centre) +
         " MPa at the centre if simply supported (report.json flat_plate)");
   for (const CompressiveBand& band : s.stresses.compressive_hoop)
-    out.push_back("compressive hoop stress down to " + short_text(band.min_hoop_stress) +
-                  " MPa for θ from " + degrees(band.theta_from) + " to " + degrees(band.theta_to) +
-                  " (meridian " + short_text(band.s_from) + " to " + short_text(band.s_to) + " mm)");
+    out.push_back("compressive hoop stress down to " + short_text(band.min_hoop_stress) + " MPa " +
+                  (band.theta_to > band.theta_from
+                       ? "for θ from " + degrees(band.theta_from) + " to " +
+                             degrees(band.theta_to) + " (meridian " + short_text(band.s_from) +
+                             " to " + short_text(band.s_to) + " mm)"
+                       : "at θ = " + degrees(band.theta_from) + " (meridian " +
+                             short_text(band.s_from) + " mm) only"));
   return out;
 }
 
