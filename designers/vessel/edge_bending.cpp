@@ -39,7 +39,7 @@ std::vector<EdgeBending> edge_bending(const HeadShape& shape, const VesselLoad& 
   for (std::size_t j = 0; j < shape.jumps.size(); ++j) {
     const CurvatureJump& jump = shape.jumps[j];
     if (jump.theta >= kHalfPi - 1e-12) break;
-    if (jump.theta > shape.membrane_end + 1e-12) break;  // not beside a plate
+    if (jump.theta > shape.membrane_end() + 1e-12) break;  // not beside a plate
     // The pieces before and after the joint (the cylinder before the junction).
     const PolarFunction* after = nullptr;
     const PolarFunction* before = nullptr;

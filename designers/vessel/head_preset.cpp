@@ -186,7 +186,7 @@ HeadShape head_shape(const HeadPreset& preset, double radius) {
       shape.name = flat ? "flanged flat, knuckle " + short_text(rk) + " mm"
                         : "conical, half angle " + short_text(alpha * 180 / kPi) + "°" +
                               (rk > 0.0 ? ", knuckle " + short_text(rk) + " mm" : std::string());
-      if (flat) shape.membrane_end = 0.0;
+      if (flat) shape.plate_radius = g.knuckle_centre_x;
       const double kx = g.knuckle_centre_x;
       if (rk > 0.0)
         shape.pieces.push_back(piece(0.0, joint, [kx, rk](double t, int d, double* out) {

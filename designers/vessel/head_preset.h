@@ -71,10 +71,12 @@ struct HeadShape {
   PolarFunction profile;  // all pieces as one R(θ); breakpoints at the joints and at π/2 (apex)
   double depth = 0.0;     // R(π/2), mm: the head's height above the junction plane
   std::vector<CurvatureJump> jumps;   // in θ order, junctions included
-  // θ up to which the head is a membrane shell: π/2 but for a flat head, 0: its knuckle turns
-  // into a plate, where r2 = x/n_x grows without bound, and the plate carries the pressure by
-  // bending (flat_plate.h); only the junction's membrane state is reported.
-  double membrane_end = 1.5707963267948966;
+  // A flat head's plate radius R − r (0 for the other heads): the plate carries the pressure by
+  // bending (flat_plate.h).
+  double plate_radius = 0.0;
+  // θ up to which the head is a membrane shell: π/2, but 0 for a flat head — its knuckle turns
+  // into the plate, where r2 = x/n_x grows without bound; only the junction's membrane state holds.
+  double membrane_end() const { return plate_radius > 0.0 ? 0.0 : 1.5707963267948966; }
 };
 
 // The preset for a cylinder of `radius` (mm). Throws InputError naming the parameter unless

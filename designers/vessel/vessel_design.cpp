@@ -60,7 +60,7 @@ PresetComparison compare_with_preset(const HeadPreset& preset, const VesselDesig
     const double deviation = std::abs(head(theta) - out.shape.profile(theta));
     if (deviation > out.max_deviation) out.max_deviation = deviation, out.deviation_angle = theta;
   }
-  out.stresses = membrane_stresses(out.shape.profile, load, 181, out.shape.membrane_end);
+  out.stresses = membrane_stresses(out.shape.profile, load, 181, out.shape.membrane_end());
   return out;
 }
 
@@ -132,12 +132,11 @@ void analyse_head(VesselSolution& out, const VesselLoad& load, double poisson) {
   out.junction_curvature = polar_curvature(a[0], a[1], a[2]);
   out.junction_slope = std::atan2(a[1], a[0]);
   out.apex_slope = std::atan2(apex[1], apex[0]);
-  const double membrane_end = out.exact ? out.exact->shape.membrane_end : kPi / 2;
+  const double membrane_end = out.exact ? out.exact->shape.membrane_end() : kPi / 2;
   out.stresses = membrane_stresses(out.profile, load, 181, membrane_end);
-  if (out.exact && out.exact->shape.membrane_end < kPi / 2) {   // a flat head: its plate
-    const double plate = load.radius - out.exact->shape.depth;  // R − r: the depth is r
-    out.flat_plate = flat_plate_bending(plate, load.thickness, load.pressure, poisson);
-  }
+  if (out.exact && out.exact->shape.plate_radius > 0.0)
+    out.flat_plate =
+        flat_plate_bending(out.exact->shape.plate_radius, load.thickness, load.pressure, poisson);
   HeadShape smooth;
   if (!out.exact) {
     smooth.pieces = {out.profile};
