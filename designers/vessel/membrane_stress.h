@@ -71,7 +71,7 @@ struct StressProfile {
   std::vector<CompressiveBand> compressive_hoop;
 };
 
-// The head is sampled over [0, membrane_end] (π/2; a flat head's 0: HeadShape::membrane_end).
+// The head is sampled over [0, membrane_end] (π/2; a flat head's 0: HeadShape::membrane_end()).
 // Throws InputError unless radius, length, thickness and pressure are > 0, samples >= 2 and
 // 0 <= membrane_end <= π/2.
 StressProfile membrane_stresses(const PolarFunction& head, const VesselLoad& load,

@@ -154,7 +154,7 @@ SynthesisResult search_smoothing(const SynthesisProblem& problem, SmoothingChoic
       throw NumericalError(chooser.last_error() +
                            " (at every smoothing weight tried, 1e-10 to 1e4)");
     choice.met = only.passes;
-    choice.lambda = only.lambda, choice.trials = chooser.trials();
+    choice.trials = chooser.trials();
     choice.target_turning_points = chooser.shape().turning_points;
     choice.turning_points = only.turning_points, choice.max_residual = only.max_residual;
     return std::move(only.result);
@@ -164,7 +164,7 @@ SynthesisResult search_smoothing(const SynthesisProblem& problem, SmoothingChoic
     if (!t.ok) break;
     (t.passes ? pass : fail) = std::move(t);
   }
-  choice.lambda = pass->lambda, choice.trials = chooser.trials();
+  choice.trials = chooser.trials();
   choice.target_turning_points = chooser.shape().turning_points;
   choice.turning_points = pass->turning_points, choice.max_residual = pass->max_residual;
   return std::move(pass->result);
@@ -193,7 +193,7 @@ SynthesisResult synthesize_with_chosen_smoothing(const SynthesisProblem& problem
   if (rule == SmoothingRule::fixed) {
     choice = SmoothingChoice{rule};
     SynthesisResult r = synthesize_profile(problem);
-    choice.lambda = r.smoothing, choice.trials = 1;
+    choice.trials = 1;
     for (const TargetResidual& t : r.targets)
       choice.max_residual = std::max(choice.max_residual, std::abs(t.residual()));
     return r;

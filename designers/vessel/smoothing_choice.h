@@ -18,8 +18,7 @@
 namespace polarform {
 
 struct SmoothingChoice {
-  SmoothingRule rule = SmoothingRule::fixed;
-  double lambda = 0.0;
+  SmoothingRule rule = SmoothingRule::fixed;  // the λ chosen is the result's smoothing
   int trials = 0;                 // syntheses run to choose it
   bool met = true;                // false: no λ tried met the rule; the best one is used
   int target_turning_points = 0;  // of the targets' sequence (shape-preserving)

@@ -191,7 +191,7 @@ VesselSolution solve_curvature_design(const VesselDesign& design, const VesselLo
   std::optional<double> hint;
   for (int round = 1;; ++round) {
     out.synthesis = synthesize_with_chosen_smoothing(problem, out.smoothing, hint);
-    hint = out.smoothing.lambda;
+    hint = out.synthesis.smoothing;
     out.placement_rounds = round;
     if (!placed) break;
     const std::vector<CurvatureTarget> before = problem.targets;

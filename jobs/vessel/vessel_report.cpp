@@ -112,7 +112,6 @@ json synthesis_json(const VesselSolveStage& r) {
           {"smoothing", s.smoothing},
           {"smoothing_choice",
            {{"rule", smoothing_rule_name(c.rule)},
-            {"lambda", c.lambda},
             {"trials", c.trials},
             {"met", c.met},
             {"kappa_tolerance_per_mm",

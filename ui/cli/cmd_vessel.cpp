@@ -72,7 +72,7 @@ void run(const VesselArgs& a) {
     const SmoothingChoice& choice = solution.smoothing;
     if (choice.rule != SmoothingRule::fixed)
       std::printf("smoothing: %s, lambda %.3g chosen in %d trials%s\n",
-                  smoothing_rule_name(choice.rule), choice.lambda, choice.trials,
+                  smoothing_rule_name(choice.rule), s.smoothing, choice.trials,
                   choice.met ? "" : " (no weight met the rule; the closest is used)");
   }
   std::printf("head depth %.3f mm; NURBS profile: %d arcs, degree %d, %d control points\n",

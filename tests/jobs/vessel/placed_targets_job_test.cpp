@@ -61,7 +61,7 @@ TEST(PlacedTargetsJob, MeridianAngleArcLengthAndVolume) {
 
   const nlohmann::json j = vessel_report_json(r, {});
   EXPECT_EQ(j["synthesis"]["smoothing_choice"]["rule"], "shape-preserving");
-  EXPECT_EQ(j["synthesis"]["smoothing"].get<double>(), s.smoothing.lambda);
+  EXPECT_EQ(j["synthesis"]["smoothing"].get<double>(), s.synthesis.smoothing);
   EXPECT_EQ(j["synthesis"]["placement_rounds"].get<int>(), s.placement_rounds);
   EXPECT_EQ(j["targets"][0]["place"], "s");
   EXPECT_NEAR(j["targets"][0]["s_mm"].get<double>(), p.curvatures[0].position, 1e-9);
