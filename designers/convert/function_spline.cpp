@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <string>
 
 #include "designers/convert/golden_section.h"
+#include "designers/convert/knot_placement.h"
 #include "src/error.h"
 #include "src/fit/constrained_least_squares.h"
 #include "src/number_text.h"
@@ -103,25 +105,16 @@ std::vector<double> span_errors(const BSplineFunction& F, const PolarFunction& R
 }
 
 // New breaks on [breaks.front(), breaks.back()] that equidistribute the predicted error: a span
-// of length h with error e needs spans of length h·(goal/e)^(1/6) (quintic: error ∝ h^6); de Boor,
-// A Practical Guide to Splines, ch. XII (knot placement by equidistribution).
+// with error e needs (e/goal)^(1/6) spans of its kind (quintic: error ∝ h^6); de Boor's NEWNOT
+// (knot_placement.h) over that mass, at least `at_least` spans.
 std::vector<double> equidistributed_breaks(const std::vector<double>& breaks,
                                            const std::vector<double>& errors, double goal,
                                            int at_least) {
-  std::vector<double> cumulative{0.0};  // needed spans up to each break
-  for (std::size_t i = 0; i < errors.size(); ++i)
-    cumulative.push_back(cumulative.back() + std::pow(std::max(errors[i], 1e-6 * goal) / goal, 1.0 / 6));
-  const int spans = std::max(at_least, static_cast<int>(std::ceil(cumulative.back())));
-  std::vector<double> out{breaks.front()};
-  std::size_t i = 0;
-  for (int k = 1; k < spans; ++k) {
-    const double level = cumulative.back() * k / spans;
-    while (cumulative[i + 1] < level) ++i;
-    const double f = (level - cumulative[i]) / (cumulative[i + 1] - cumulative[i]);
-    out.push_back(breaks[i] + f * (breaks[i + 1] - breaks[i]));
-  }
-  out.push_back(breaks.back());
-  return out;
+  std::vector<double> mass;
+  for (double e : errors) mass.push_back(std::pow(std::max(e, 1e-6 * goal) / goal, 1.0 / 6));
+  const double needed = std::accumulate(mass.begin(), mass.end(), 0.0);
+  const int spans = std::max(at_least, static_cast<int>(std::ceil(needed)));
+  return equidistribute(breaks, mass, spans, {breaks.front(), breaks.back()});
 }
 
 bool is_constant(const PolarFunction& R, const std::vector<double>& grid) {
