@@ -23,6 +23,8 @@ double into_domain(const PolarFunction& R, double psi) {
 
 }  // namespace
 
+int samples_per_span(int degree) { return std::min(32, 4 * (degree + 1)); }
+
 double radial_error_at(const NurbsCurve2d& C, const PolarFunction& R, double u, double near,
                        double* psi_out) {
   const Eigen::Vector2d p = C(u);
@@ -33,9 +35,17 @@ double radial_error_at(const NurbsCurve2d& C, const PolarFunction& R, double u, 
 
 ProfileError profile_error(const NurbsCurve2d& C, const PolarFunction& R, double u0, double u1,
                            int samples) {
+  // The grid: C's knot spans within [u0, u1], since the error oscillates span by span (a minimax
+  // refit's nearly equally), each sampled and every local maximum refined.
+  std::vector<double> grid{u0};
+  for (double k : C.knots())
+    if (k > grid.back() && k < u1) grid.push_back(k);
+  grid.push_back(u1);
+  const int spans = static_cast<int>(grid.size()) - 1;
   // The base circles are parametrised by angle, so u is a good guess of the polar angle.
   const Maximum m =
-      refined_maximum([&](double u) { return radial_error_at(C, R, u, u); }, {u0, u1}, samples, 4);
+      refined_maximum([&](double u) { return radial_error_at(C, R, u, u); }, grid,
+                      std::max(samples_per_span(C.degree()), samples / spans), 2 * spans + 4);
   ProfileError out;
   out.max_radial = m.value;
   double psi;

@@ -17,8 +17,13 @@ struct ProfileError {
   double at_angle = 0.0;    // polar angle of the max radial error, rad
 };
 
-// Error of C over the parameter interval [u0, u1] against R, from `samples` points refined
-// around the largest sample by golden-section search.
+// Samples per knot span that see every bump of a degree-p span's error: the error of a span that
+// follows a smooth curve oscillates about p + 2 times (Chebyshev), so 4 per bump, at most 32.
+int samples_per_span(int degree);
+
+// Error of C over the parameter interval [u0, u1] against R: `samples` points (at least
+// samples_per_span in each of C's knot spans within the interval), every local maximum refined by
+// golden-section search.
 ProfileError profile_error(const NurbsCurve2d& C, const PolarFunction& R, double u0, double u1,
                            int samples = 32);
 

@@ -25,17 +25,13 @@ namespace {
 
 constexpr int kMaxSpans = 20000;
 // The fits: 2p + 2 samples per span; the full-distance share 1e-5 lets the curve slide along the
-// profile; the minimax fits take 8 Lawson steps (more gain little).
+// profile.
 constexpr double kSlide = 1e-5;
-constexpr int kLawsonSteps = 8;
 // The table's span errors (2·(2p + 2) + 1 points per span) must meet kShare·tol; the final
 // measurement against R (every local maximum refined) decides.
 constexpr double kShare = 0.99;
-// Rounds of knot placement on plain fits (one solve each): the equidistribution converges slowly,
-// 30 rounds give about 4 % fewer control points than 6 on the examples.
-constexpr int kPlacementRounds = 30;
-constexpr std::size_t kRemovalTries = 10;
 constexpr int kInsertionRounds = 200;
+constexpr double kMinSpan = 1e-9;  // share of the domain: the shortest span the insertion makes
 
 std::vector<double> uniform_breaks(double a, double b, int spans) {
   std::vector<double> out;
@@ -65,8 +61,9 @@ std::optional<double> fold(const NurbsCurve2d& C, const std::vector<double>& bre
   return std::nullopt;
 }
 
-// The result, its error measured against R itself over every span (conversion_error.h), 8 + 1
-// samples per span and every local maximum of the samples refined by golden section; `at` receives
+// The result, its error measured against R itself over every span (conversion_error.h),
+// samples_per_span + 1 samples per span and every local maximum of the samples refined by golden
+// section; `at` receives
 // the parameter of the largest error (infinite at a fold).
 LimitedCurve measure(const SplineSpace& s, const PolarFunction& R, const Eigen::MatrixXd& coefs,
                      double* at = nullptr) {
@@ -78,7 +75,7 @@ LimitedCurve measure(const SplineSpace& s, const PolarFunction& R, const Eigen::
     return out;
   }
   const Maximum m = refined_maximum([&](double u) { return radial_error_at(out.curve, R, u, u); },
-                                    s.breaks(), 8, 4 * s.spans());
+                                    s.breaks(), samples_per_span(s.degree()), 4 * s.spans());
   double psi = 0.0, d[2];
   radial_error_at(out.curve, R, m.at, m.at, &psi);
   psi = R.closed()
@@ -175,53 +172,69 @@ LimitedCurve interpolation(const PolarFunction& R, int degree, int points) {
   return measure(s, R, solver.solve(rhs).transpose());
 }
 
-}  // namespace
+// Step 1 of approximate_polar_curve: the density of need for degree p (its breaks and the mass
+// over each span), the spans it asks for, and the breaks every fit keeps.
+struct Placement {
+  int degree = 0;
+  std::vector<double> fixed, breaks, mass;
+  int spans = 0, fewest = 0;
+  int predicted_control_points() const { return spans + degree; }  // of the clamped curve
+};
 
-LimitedCurve approximate_polar_curve(const PolarFunction& R, int degree, double tol) {
-  if (degree < 1 || degree > kMaxDegree)
-    throw InputError("degree-limited profile: degree " + std::to_string(degree) + " outside [1, " +
-                     std::to_string(kMaxDegree) + "]");
-  if (!(tol > 0)) throw InputError("degree-limited profile: tolerance must be > 0 mm");
-  const int p = degree;
+Placement place_knots(const PolarFunction& R, const ProfileTable& table, int p, double tol,
+                      const LimitedEffort& effort) {
   const bool periodic = R.closed();
-  const ProfileTable table(R);
-  std::vector<double> fixed{R.start};
-  for (double b : jump_breakpoints(R, p)) fixed.push_back(b);
-  fixed.push_back(R.end);
-  const int fewest = std::max<int>(periodic ? p + 1 : 1, static_cast<int>(fixed.size()) - 1);
-  const ProfileFitOptions plain{2 * p + 2, kSlide, 0}, minimax{2 * p + 2, kSlide, kLawsonSteps};
+  Placement out;
+  out.degree = p;
+  out.fixed = {R.start};
+  for (double b : jump_breakpoints(R, p)) out.fixed.push_back(b);
+  out.fixed.push_back(R.end);
+  out.fewest = std::max<int>(periodic ? p + 1 : 1, static_cast<int>(out.fixed.size()) - 1);
+  const ProfileFitOptions plain{2 * p + 2, kSlide, 0};
+  // Knots by need: fits on breaks that equidistribute the last fit's measured error, sized for
+  // the error of every span to meet kShare·tol if the error scales like h^(p+1).
+  std::vector<double> breaks = uniform_breaks(R.start, R.end, std::max(16, 2 * out.fewest));
+  std::vector<double> mass;
+  for (std::size_t j = 0; j + 1 < breaks.size(); ++j) mass.push_back(breaks[j + 1] - breaks[j]);
+  Fit f = fit_on(equidistribute(breaks, mass, static_cast<int>(mass.size()), out.fixed), periodic,
+                 table, p, plain);
+  mass = need(f);
+  for (int round = 0; round < effort.placement_rounds; ++round) {
+    const double total = std::accumulate(mass.begin(), mass.end(), 0.0);
+    const double n = std::ceil(total / std::pow(kShare * tol, 1.0 / (p + 1)));
+    f = fit_on(
+        equidistribute(f.space.breaks(), mass,
+                       std::clamp<int>(static_cast<int>(std::min(n, 1e9)), out.fewest, kMaxSpans),
+                       out.fixed),
+        periodic, table, p, plain);
+    mass = need(f);
+    if (n >= kMaxSpans) break;  // the span budget decides (step 2)
+  }
+  out.breaks = f.space.breaks();
+  out.mass = std::move(mass);
+  out.spans = f.space.spans();
+  return out;
+}
+
+// Steps 2-4 of approximate_polar_curve on the placement of step 1.
+LimitedCurve fit_by_need(const PolarFunction& R, const ProfileTable& table, const Placement& place,
+                         double tol, const LimitedEffort& effort) {
+  const int p = place.degree, fewest = place.fewest;
+  const bool periodic = R.closed();
+  const std::vector<double>& fixed = place.fixed;
+  const ProfileFitOptions minimax{2 * p + 2, kSlide, effort.lawson_steps};
   const auto fail = [&] {
-    return NumericalError("degree-limited profile: no degree-" + std::to_string(degree) +
+    return NumericalError("degree-limited profile: no degree-" + std::to_string(p) +
                           " spline with up to " + std::to_string(kMaxSpans) + " spans meets " +
                           number_text(tol) + " mm");
   };
 
-  // 1. Knots by need: fits on breaks that equidistribute the last fit's measured error, sized
-  // for the error of every span to meet kShare·tol if the error scales like h^(p+1).
-  std::vector<double> breaks = uniform_breaks(R.start, R.end, std::max(16, 2 * fewest));
-  std::vector<double> mass;
-  for (std::size_t j = 0; j + 1 < breaks.size(); ++j) mass.push_back(breaks[j + 1] - breaks[j]);
-  Fit f = fit_on(equidistribute(breaks, mass, static_cast<int>(mass.size()), fixed), periodic,
-                 table, p, plain);
-  mass = need(f);
-  for (int round = 0; round < kPlacementRounds; ++round) {
-    const double total = std::accumulate(mass.begin(), mass.end(), 0.0);
-    const double n = std::ceil(total / std::pow(kShare * tol, 1.0 / (p + 1)));
-    f = fit_on(equidistribute(
-                   f.space.breaks(), mass,
-                   std::clamp<int>(static_cast<int>(std::min(n, 1e9)), fewest, kMaxSpans), fixed),
-               periodic, table, p, plain);
-    mass = need(f);
-    if (n >= kMaxSpans) break;  // the span budget decides (step 2)
-  }
-
   // 2. The fewest spans on that density whose minimax fit meets the tolerance: grown until one
   // does, then bisected.
-  const std::vector<double> ref_breaks = f.space.breaks(), ref_mass = mass;
   const auto try_spans = [&](int n) {
-    return fit_on(equidistribute(ref_breaks, ref_mass, n, fixed), periodic, table, p, minimax);
+    return fit_on(equidistribute(place.breaks, place.mass, n, fixed), periodic, table, p, minimax);
   };
-  int hi = f.space.spans();
+  int hi = place.spans;
   Fit best = try_spans(hi);
   while (best.max > kShare * tol) {
     if (hi >= kMaxSpans) throw fail();
@@ -247,7 +260,7 @@ LimitedCurve approximate_polar_curve(const PolarFunction& R, int degree, double 
       if (!std::binary_search(fixed.begin(), fixed.end(), b[i]))
         order.emplace_back(std::max(best.errors[i - 1], best.errors[i]), b[i]);
     std::sort(order.begin(), order.end());
-    if (order.size() > kRemovalTries) order.resize(kRemovalTries);
+    if (order.size() > effort.removal_tries) order.resize(effort.removal_tries);
     for (const auto& [error, at] : order) {
       std::vector<double> fewer = best.space.breaks();
       if (static_cast<int>(fewer.size()) - 2 < fewest) break;
@@ -270,9 +283,56 @@ LimitedCurve approximate_polar_curve(const PolarFunction& R, int degree, double 
             static_cast<std::size_t>(std::upper_bound(b.begin(), b.end(), at) - b.begin()), 1,
             b.size() - 1) -
         1;
+    // A miss that splitting cannot reach (a fold the fit keeps) ends before round-off does.
+    if (!(b[j + 1] - b[j] > kMinSpan * (R.end - R.start))) throw fail();
     b.insert(b.begin() + static_cast<std::ptrdiff_t>(j) + 1, 0.5 * (b[j] + b[j + 1]));
     best = fit_on(std::move(b), periodic, table, p, minimax);
   }
+}
+
+void check_degree_and_tolerance(int degree, double tol) {
+  if (degree < 1 || degree > kMaxDegree)
+    throw InputError("degree-limited profile: degree " + std::to_string(degree) + " outside [1, " +
+                     std::to_string(kMaxDegree) + "]");
+  if (!(tol > 0)) throw InputError("degree-limited profile: tolerance must be > 0 mm");
+}
+
+}  // namespace
+
+LimitedCurve approximate_polar_curve(const PolarFunction& R, int degree, double tol,
+                                     const LimitedEffort& effort) {
+  check_degree_and_tolerance(degree, tol);
+  const ProfileTable table(R, effort.table_intervals);
+  return fit_by_need(R, table, place_knots(R, table, degree, tol, effort), tol, effort);
+}
+
+LimitedCurve fewest_control_points(const PolarFunction& R, const std::vector<int>& degrees,
+                                   double tol, const LimitedEffort& effort) {
+  if (degrees.empty()) throw InputError("degree-limited profile: no degree to try");
+  for (int degree : degrees) check_degree_and_tolerance(degree, tol);
+  const ProfileTable table(R, effort.table_intervals);
+  // Every degree's knots placed (plain fits, cheap), then the minimax fits in the order of the
+  // control points the placements predict, until `finalists` of them have met the tolerance.
+  std::vector<Placement> places;
+  for (int degree : degrees) places.push_back(place_knots(R, table, degree, tol, effort));
+  std::stable_sort(places.begin(), places.end(), [](const Placement& a, const Placement& b) {
+    return a.predicted_control_points() < b.predicted_control_points() ||
+           (a.predicted_control_points() == b.predicted_control_points() && a.degree < b.degree);
+  });
+  std::optional<LimitedCurve> best;
+  std::optional<NumericalError> failure;
+  std::size_t fitted = 0;
+  for (std::size_t k = 0; k < places.size() && fitted < effort.finalists; ++k) try {
+      LimitedCurve c = fit_by_need(R, table, places[k], tol, effort);
+      ++fitted;
+      if (!best || c.control_points < best->control_points ||
+          (c.control_points == best->control_points && c.curve.degree() < best->curve.degree()))
+        best = std::move(c);
+    } catch (const NumericalError& e) {
+      failure = e;
+    }
+  if (!best) throw *failure;
+  return std::move(*best);
 }
 
 LimitedCurve interpolate_polar_curve(const PolarFunction& R, int degree, double tol) {

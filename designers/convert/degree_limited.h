@@ -5,10 +5,25 @@
 // profile, as many as needed.
 #pragma once
 
+#include <vector>
+
 #include "designers/convert/polar_function.h"
 #include "src/nurbs/nurbs_curve.h"
 
 namespace polarform {
+
+// How much work the fit spends for fewer control points: the density table of R, the rounds of
+// knot placement, the Lawson steps of each minimax fit and the knot removals tried. The defaults
+// are the degree-limited export's; the converter's refit (polar_conversion.h) runs leaner.
+struct LimitedEffort {
+  int table_intervals = 4096;
+  int placement_rounds = 30;
+  int lawson_steps = 8;
+  std::size_t removal_tries = 10;
+  // fewest_control_points: how many degrees are fitted to the end (those whose placement predicts
+  // the fewest control points; a degree that fails makes way for the next).
+  std::size_t finalists = 1;
+};
 
 struct LimitedCurve {
   NurbsCurve2d curve;           // clamped; closed (C^{p-1} at the seam) when R is closed
@@ -24,7 +39,15 @@ struct LimitedCurve {
 // result measured against R itself (a span split where it misses). The fits let the curve slide
 // along the profile and are pushed toward the minimax radial error (profile_fit.h). Throws
 // NumericalError if 20000 spans do not reach tol.
-LimitedCurve approximate_polar_curve(const PolarFunction& R, int degree, double tol);
+LimitedCurve approximate_polar_curve(const PolarFunction& R, int degree, double tol,
+                                     const LimitedEffort& effort = {});
+
+// The degree-limited fit at the best of `degrees` on one table of R: every degree's knots placed by
+// need, then fitted to the end in the order of the control points the placements predict until
+// `effort.finalists` have met the tolerance, and the verified curve with the fewest control points
+// kept (the lower degree among equals). Throws NumericalError when every degree fails.
+LimitedCurve fewest_control_points(const PolarFunction& R, const std::vector<int>& degrees,
+                                   double tol, const LimitedEffort& effort = {});
 
 // Interpolation of N points R(ψ_k)(cos ψ_k, sin ψ_k) equally spaced in ψ, with the fewest N (found
 // by bisection) whose measured radial error meets tol: the usual "spline through points" export.

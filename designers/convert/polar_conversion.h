@@ -1,8 +1,10 @@
 // The polar-function converter (Bae 2002, §5.1, improved): R(θ) → F(u) as a B-spline → a base
 // circle of unequal quasi-uniform quartic (or RQB) arcs chosen so that the MEASURED radial error
 // of C(u) = F(u)·B̃(u) meets the tolerance → one NURBS curve of degree deg F + 4 (or + 2), with
-// the measurements that prove it; then the knots the remaining error budget allows are removed
-// (NURBS Book A5.8, each removal measured).
+// the measurements that prove it; then made compact within the tolerance: refitted by a
+// least-squares B-spline with knots by need (degree_limited.h) where that has fewer control
+// points, or else the knots the remaining error budget allows removed (NURBS Book A5.8, each
+// removal measured).
 #pragma once
 
 #include <string>
@@ -19,10 +21,14 @@ namespace polarform {
 // would refine without end.
 inline constexpr double kMinTolerance = 1e-9;
 
-// Which knots of the product C = F·B the conversion may remove within the tolerance: none (C is
-// exactly F·B, e.g. when F and B are used apart, as for a cylindrical cam's track); all but those
-// at R's breakpoints (which stay exact arc junctions, e.g. a vessel head's apex on the axis); all.
-enum class Compaction { none, between_breakpoints, full };
+// How the conversion makes the product C = F·B compact within the tolerance: not at all (C is
+// exactly F·B, e.g. when F and B are used apart, as for a cylindrical cam's track); by removing
+// the knots of C but those at R's breakpoints (which stay exact arc junctions); by removing any
+// knot; by a refit — the least-squares B-spline of degree 3 to 6 with knots by need and the
+// fewest control points (degree_limited.h, periodic when R is closed, R's end points kept when
+// open), measured against R, replacing C when it has fewer control points than C (any knot
+// removed otherwise).
+enum class Compaction { none, between_breakpoints, full, refit };
 
 struct ConversionOptions {
   double tolerance = 1e-3;  // mm: bound on the measured max radial error of the result
@@ -30,7 +36,7 @@ struct ConversionOptions {
   AlphaRule alpha = AlphaRule::minimax;
   // Share of the tolerance for representing R as a B-spline (the rest is the arcs' budget).
   double function_share = 0.9;
-  Compaction compaction = Compaction::between_breakpoints;
+  Compaction compaction = Compaction::refit;
 
   bool operator==(const ConversionOptions&) const = default;
 };
@@ -40,7 +46,8 @@ struct ArcSummary {
   double max_radial_error = 0.0;    // mm, measured on the final curve
 };
 
-// The control points after each step of the conversion, in order ("product", "knot removal").
+// The control points after each step of the conversion, in order: "product", then "refit" or
+// "knot removal".
 struct ConversionStep {
   std::string name;
   int control_points = 0;
@@ -52,7 +59,9 @@ struct ConversionStep {
 struct PolarConversion {
   NurbsCurve2d curve;
   BaseCircle base;
-  BSplineFunction function;  // F(u), R as a B-spline in the base circle's parameter (u ≈ θ)
+  // F(u), R as a B-spline in the base circle's parameter u ≈ θ (the curve's parameter too: a refit
+  // is parametrized by the polar angle within a small slide).
+  BSplineFunction function;
   std::vector<ArcSummary> arcs;
   double tolerance = 0.0;
   // Measured on the final curve against the exact R:

@@ -373,10 +373,9 @@ CamConversionStage convert_cam(const CamDesignStage& design, const CamJobOptions
   CamConversionStage c;
   if (const auto* plate = std::get_if<PlateCam>(&design.cam)) {
     c.profile_function = cam_polar_function(*plate);
-    // The profile is exported as converted: every knot the tolerance allows goes, including one
-    // copy at each C0 arc junction, so that readers see one smooth curve.
-    ConversionOptions conversion = project.conversion;
-    conversion.compaction = Compaction::full;
+    // The profile is exported as converted and made compact (the project's compaction: by
+    // default refitted, one smooth curve with the fewest control points).
+    const ConversionOptions& conversion = project.conversion;
     if (project.cam.conjugate) {
       convert_conjugate_pair(project, *plate, conversion, options, c);
     } else {

@@ -290,6 +290,10 @@ void read_conversion(const XmlElementReader& r, double unit, CamProject& p) {
   p.conversion.alpha = r.choice("alpha", {"minimax", "printed"}, "minimax") == "printed"
                            ? AlphaRule::printed
                            : AlphaRule::minimax;
+  const std::string compaction = r.choice("compaction", {"refit", "knot-removal", "none"}, "refit");
+  p.conversion.compaction = compaction == "none"           ? Compaction::none
+                            : compaction == "knot-removal" ? Compaction::full
+                                                           : Compaction::refit;
   if (r.has("max-degree")) {
     const int degree = r.integer("max-degree", 0);
     if (degree < 1) r.fail("max-degree", "an integer >= 1, or empty for the exact degree");
@@ -474,6 +478,9 @@ std::string cam_project_xml(const CamProject& p) {
   attr("tolerance", number(p.conversion.tolerance));
   attr("base", p.conversion.base == ArcKind::rqb ? "rqb" : "quasi-uniform");
   attr("alpha", p.conversion.alpha == AlphaRule::printed ? "printed" : "minimax");
+  attr("compaction", p.conversion.compaction == Compaction::none    ? "none"
+                     : p.conversion.compaction == Compaction::refit ? "refit"
+                                                                    : "knot-removal");
   attr("max-degree", p.max_degree ? std::to_string(*p.max_degree) : "");
   out << "/>\n";
   if (p.load) {

@@ -55,10 +55,11 @@ TEST(MeasuredKnotRemoval, FullCompactionLeavesNoC0KnotAtTheExamplesTolerance) {
   }
 }
 
-TEST(MeasuredKnotRemoval, DefaultKeepsTheArcJunctionsAtBreakpoints) {
+TEST(MeasuredKnotRemoval, BetweenBreakpointsKeepsTheArcJunctionsAtBreakpoints) {
   const PolarFunction R = contour("roller");
   ConversionOptions options;
   options.tolerance = 1e-3;
+  options.compaction = Compaction::between_breakpoints;
   const PolarConversion c = convert_polar_function(R, options);
   ASSERT_FALSE(R.breakpoints.empty());
   for (double b : R.breakpoints) {

@@ -33,6 +33,7 @@ TEST(VesselPipeline, RevolvedHeadStaysWithinTheConversionTolerance) {
   const VesselSolution s = solve_vessel(custom_design());
   ConversionOptions options;
   options.tolerance = 1e-3;
+  options.compaction = Compaction::between_breakpoints;  // as the vessel job converts
   const PolarConversion c = convert_polar_function(s.profile, options);
   EXPECT_LE(c.max_radial_error, 1e-3);
   EXPECT_TRUE(c.function_exact);

@@ -66,14 +66,22 @@ TEST(CamJob, EveryExampleMeetsItsToleranceUnderIndependentSampling) {
   }
 }
 
-TEST(CamJob, ProfileHasTheProductDegreeAndIsClosed) {
+TEST(CamJob, ProfileIsTheCompactedProductAndIsClosed) {
   for (const std::string& name : kExampleNames) {
     const CamJobResult& r = example(name).result;
     const int degree =
         r.conversion.conversion.function.spline().degree() + 4;  // quartic base: deg F + 4
     if (r.plate()) {
+      // The product C = F·B, refitted with fewer control points (compaction="refit").
+      const PolarConversion& conversion = r.conversion.conversion;
       const NurbsCurve2d& c = plate_profile(r).curve;
-      EXPECT_EQ(c.degree(), degree) << name;
+      ASSERT_EQ(conversion.steps.size(), 2u) << name;
+      EXPECT_EQ(conversion.steps[0].name, "product") << name;
+      EXPECT_EQ(conversion.steps[1].name, "refit") << name;
+      EXPECT_EQ(conversion.steps[1].control_points, c.size()) << name;
+      EXPECT_LT(c.size(), conversion.steps[0].control_points) << name;
+      EXPECT_GE(c.degree(), 3) << name;
+      EXPECT_LE(c.degree(), 6) << name;
       EXPECT_LT((c(c.front()) - c(c.back())).norm(), 1e-12) << name;
       ASSERT_TRUE(plate_profile(r).limited) << name;
       EXPECT_EQ(plate_profile(r).limited->curve.degree(), 3) << name;

@@ -84,7 +84,8 @@ TEST(Cli, CamOnTheRollerExampleWritesTheJobsFiles) {
   EXPECT_EQ(run.err, jerk_steps);
   const json cli = read_json(scratch / "out" / "report.json");
   const json job = read_json(example("roller").dir / "report.json");
-  const std::string summary = std::to_string(job["arcs"].get<int>()) + " arcs, degree 9, " +
+  const std::string summary = std::to_string(job["arcs"].get<int>()) + " arcs, degree " +
+                              std::to_string(job["degree"].get<int>()) + ", " +
                               std::to_string(job["control_points"].get<int>()) + " control points";
   EXPECT_NE(run.out.find(summary), std::string::npos) << run.out;
   // The design and key results, in report.html's words.
@@ -126,16 +127,17 @@ TEST(Cli, OptionsOverrideTheProject) {
       0);
   const json rqb = read_json(scratch / "rqb" / "report.json");
   EXPECT_EQ(rqb["base"], "rqb");
-  EXPECT_EQ(rqb["degree"].get<int>(), exact["degree"].get<int>() - 2);  // deg F + 2
+  // RQB arcs follow the angle less closely: more of them for the same tolerance.
+  EXPECT_GT(rqb["arcs"].get<int>(), exact["arcs"].get<int>());
   EXPECT_LE(rqb["max_radial_error_mm"].get<double>(), 1e-3);
 
   ASSERT_EQ(
-      run_cli({"cam", design, "--out", (scratch / "capped").string(), "--max-degree", "5", "-q"},
+      run_cli({"cam", design, "--out", (scratch / "capped").string(), "--max-degree", "3", "-q"},
               scratch)
           .status,
       0);
   const json capped = read_json(scratch / "capped" / "report.json");
-  EXPECT_EQ(capped["exported_profile"]["degree"], 5);
+  EXPECT_EQ(capped["exported_profile"]["degree"], 3);
   EXPECT_LE(capped["exported_profile"]["max_radial_error_mm"].get<double>(), 1e-3);
 }
 
