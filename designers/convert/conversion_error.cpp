@@ -21,6 +21,24 @@ double into_domain(const PolarFunction& R, double psi) {
   return std::clamp(psi, R.start, R.end);
 }
 
+// The max radial error over `grid` (refined_maximum's sampling), where it lies and its normal
+// distance.
+ProfileError located_error(const NurbsCurve2d& C, const PolarFunction& R,
+                           const std::vector<double>& grid, int per_interval, int refine) {
+  const Maximum m = refined_maximum([&](double u) { return radial_error_at(C, R, u, u); }, grid,
+                                    per_interval, refine);
+  ProfileError out;
+  out.max_radial = m.value;
+  double psi;
+  radial_error_at(C, R, m.at, m.at, &psi);
+  out.at_angle = into_domain(R, psi);
+  double d[2];
+  R.derivatives(out.at_angle, 1, d);
+  // A radial offset δ moves the point by δ·R/√(R² + R'²) along the normal of r = R(ψ).
+  out.max_normal = m.value * std::abs(d[0]) / std::hypot(d[0], d[1]);
+  return out;
+}
+
 }  // namespace
 
 double radial_error_at(const NurbsCurve2d& C, const PolarFunction& R, double u, double near,
@@ -34,18 +52,12 @@ double radial_error_at(const NurbsCurve2d& C, const PolarFunction& R, double u, 
 ProfileError profile_error(const NurbsCurve2d& C, const PolarFunction& R, double u0, double u1,
                            int samples) {
   // The base circles are parametrised by angle, so u is a good guess of the polar angle.
-  const Maximum m =
-      refined_maximum([&](double u) { return radial_error_at(C, R, u, u); }, {u0, u1}, samples, 4);
-  ProfileError out;
-  out.max_radial = m.value;
-  double psi;
-  radial_error_at(C, R, m.at, m.at, &psi);
-  out.at_angle = into_domain(R, psi);
-  double d[2];
-  R.derivatives(out.at_angle, 1, d);
-  // A radial offset δ moves the point by δ·R/√(R² + R'²) along the normal of r = R(ψ).
-  out.max_normal = m.value * std::abs(d[0]) / std::hypot(d[0], d[1]);
-  return out;
+  return located_error(C, R, {u0, u1}, samples, 4);
+}
+
+ProfileError profile_error(const NurbsCurve2d& C, const PolarFunction& R,
+                           const std::vector<double>& grid, int per_interval) {
+  return located_error(C, R, grid, per_interval, 4 * static_cast<int>(grid.size() - 1));
 }
 
 double max_tangent_jump(const NurbsCurve2d& C, const std::vector<double>& junctions) {

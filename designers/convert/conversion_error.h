@@ -22,6 +22,12 @@ struct ProfileError {
 ProfileError profile_error(const NurbsCurve2d& C, const PolarFunction& R, double u0, double u1,
                            int samples = 32);
 
+// Error of the whole of C against R over the intervals of `grid` (e.g. C's distinct knots), whose
+// parameter must approximate the polar angle to within π: `per_interval` + 1 samples in each
+// interval, every local maximum of the samples refined by golden-section search.
+ProfileError profile_error(const NurbsCurve2d& C, const PolarFunction& R,
+                           const std::vector<double>& grid, int per_interval = 8);
+
 // Max angle (rad) between the left and right tangents of C at the given interior parameters.
 double max_tangent_jump(const NurbsCurve2d& C, const std::vector<double>& junctions);
 
