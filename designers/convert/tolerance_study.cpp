@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "designers/convert/degree_limited.h"
+#include "designers/convert/occt_peer.h"
 #include "designers/convert/polar_conversion.h"
 #include "src/base/angle_deviation.h"
 #include "src/error.h"
@@ -44,10 +45,27 @@ StudyMethodResult base_method(const PolarFunction& R, double tol, ArcKind kind) 
   return {static_cast<int>(c.arcs.size()), 0, c.curve.degree(), c.curve.size(), c.max_radial_error};
 }
 
+// Issue 14's comparison: our control points over the fewest of the found peer fits'.
+StudyPeerRatios peer_ratios(const StudyRow& row) {
+  StudyPeerRatios out;
+  int best = 0;
+  for (const StudyPeerResult* p : {&row.occt_degree3, &row.occt_best})
+    if (p->found && (best == 0 || p->control_points < best)) best = p->control_points;
+  if (best > 0) {
+    out.exact_to_best = double(row.exact.control_points) / best;
+    out.degree3_to_best = double(row.degree3.control_points) / best;
+  }
+  if (row.occt_degree3.found)
+    out.degree3_to_occt_degree3 =
+        double(row.degree3.control_points) / row.occt_degree3.control_points;
+  return out;
+}
+
 }  // namespace
 
 std::vector<StudyRow> tolerance_study(const PolarFunction& R, const std::vector<double>& tolerances,
-                                      const std::function<void(double)>& progress) {
+                                      const std::function<void(double)>& progress,
+                                      const StudyOptions& options) {
   std::vector<StudyRow> rows;
   for (std::size_t k = 0; k < tolerances.size(); ++k) {
     const double tol = tolerances[k];
@@ -59,6 +77,26 @@ std::vector<StudyRow> tolerance_study(const PolarFunction& R, const std::vector<
     // A closed interpolant has as many distinct control values as points (3 repeat at the seam).
     row.cubic = {0, R.closed() ? cubic.control_points - 3 : cubic.control_points, 3,
                  cubic.control_points, cubic.max_radial_error};
+    ConversionOptions exact_options;
+    exact_options.tolerance = tol;
+    const PolarConversion exact = convert_polar_function(R, exact_options);
+    row.exact = {static_cast<int>(exact.arcs.size()), 0, exact.curve.degree(), exact.curve.size(),
+                 exact.max_radial_error};
+    const LimitedCurve degree3 = approximate_polar_curve(R, 3, tol);
+    row.degree3 = {0, 0, 3, degree3.control_points, degree3.max_radial_error};
+    // Discarded without Open CASCADE, so that occt_points_to_bspline need not exist.
+    if constexpr (kOcctPeersAvailable) {
+      if (options.peers) {
+        const auto peer = [&](int deg_min, int deg_max) {
+          const PeerCurve c = occt_points_to_bspline(R, deg_min, deg_max, tol);
+          return StudyPeerResult{c.found, c.degree, c.control_points, c.max_radial_error, c.tol3d};
+        };
+        row.peers = true;
+        row.occt_degree3 = peer(3, 3);
+        row.occt_best = peer(3, 8);
+        row.ratios = peer_ratios(row);
+      }
+    }
     rows.push_back(row);
     if (progress) progress(static_cast<double>(k + 1) / tolerances.size());
   }

@@ -1,11 +1,14 @@
 // Conversion studies: how many arcs and control points each way of turning R(θ) into a NURBS
 // curve needs as the tolerance tightens — the quasi-uniform quartic base (ours), the RQB base, and
 // the baseline a CAD user would otherwise build (a cubic spline through points sampled from the
-// exact profile, as many as needed) — each with its measured error; and the max angle deviation of
-// RQB and quasi-uniform arcs against the arc angle (Bae 2002, Figure 5.4).
+// exact profile, as many as needed) — each with its measured error; polarform's compact profiles
+// (the compacted exact form, the degree-3 profile) beside Open CASCADE's GeomAPI_PointsToBSpline
+// as the peer (issue 14), with the control-point ratios; and the max angle deviation of RQB and
+// quasi-uniform arcs against the arc angle (Bae 2002, Figure 5.4).
 #pragma once
 
 #include <functional>
+#include <limits>
 #include <vector>
 
 #include "designers/convert/polar_function.h"
@@ -21,9 +24,34 @@ struct StudyMethodResult {
   double max_radial_error = 0.0;  // mm, measured
 };
 
+// A peer's fit (occt_peer.h): found = false when no fit of its Tol3D ladder measured within ε.
+struct StudyPeerResult {
+  bool found = false;
+  int degree = 0;
+  int control_points = 0;
+  double max_radial_error = 0.0;  // mm, measured
+  double tol3d = 0.0;             // mm, the Tol3D that gave it
+};
+
+// Control points of polarform's compact profiles over the best peer's (the fewest among the found
+// peer fits) and over OCCT's degree 3; NaN where that peer found no curve.
+struct StudyPeerRatios {
+  static constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+  double exact_to_best = kNone, degree3_to_best = kNone, degree3_to_occt_degree3 = kNone;
+};
+
 struct StudyRow {
   double tolerance = 0.0;  // mm
   StudyMethodResult quartic, rqb, cubic;
+  StudyMethodResult exact;    // the exact form with the converter's default knot removal
+  StudyMethodResult degree3;  // the degree-3 profile, knots by need (degree_limited.h)
+  bool peers = false;         // the peer fits below were run
+  StudyPeerResult occt_degree3, occt_best;  // GeomAPI_PointsToBSpline, degree 3 and 3..8
+  StudyPeerRatios ratios;
+};
+
+struct StudyOptions {
+  bool peers = true;  // run the peer fits (where Open CASCADE is available, occt_peer.h)
 };
 
 // Log-spaced tolerances from `loosest` down to `tightest` (> 0), `per_decade` per decade.
@@ -31,7 +59,8 @@ std::vector<double> log_tolerances(double loosest, double tightest, int per_deca
 
 // One row per tolerance; `progress` (optional) gets the fraction done.
 std::vector<StudyRow> tolerance_study(const PolarFunction& R, const std::vector<double>& tolerances,
-                                      const std::function<void(double)>& progress = {});
+                                      const std::function<void(double)>& progress = {},
+                                      const StudyOptions& options = {});
 
 struct DeviationRow {
   double arc_angle = 0.0;  // rad (2φ)

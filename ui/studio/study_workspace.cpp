@@ -3,8 +3,10 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
+#include "designers/convert/occt_peer.h"
 #include "jobs/study/study_plots.h"
 #include "src/number_text.h"
 #include "ui/studio/colors.h"
@@ -23,8 +25,10 @@ void StudyWorkspace::start() {
   error_.clear();
   const std::vector<double> tolerances =
       log_tolerances(settings_.loosest, settings_.tightest, settings_.per_decade);
-  task_.start([project = *input_, tolerances](TaskControl& control) {
-    return run_study_job(project, tolerances, [&control](double f) { control.report(f); });
+  task_.start([project = *input_, tolerances,
+               options = StudyOptions{settings_.peers}](TaskControl& control) {
+    return run_study_job(
+        project, tolerances, [&control](double f) { control.report(f); }, options);
   });
 }
 
@@ -61,6 +65,7 @@ void StudyWorkspace::draw() {
   ImGui::BeginChild("study controls", ImVec2(left, avail.y), true);
   draw_controls();
   draw_table();
+  draw_peer_table();
   ImGui::EndChild();
   ImGui::SameLine(0, 0);
   vertical_splitter("study split", left_fraction, avail.x);
@@ -79,6 +84,14 @@ void StudyWorkspace::draw_controls() {
   log_slider("tightest [mm]", settings_.tightest, 1e-8, 1e-2, "%.2g");
   input_int("steps per decade", settings_.per_decade, 1, 10);
   ImGui::PopItemWidth();
+  ImGui::BeginDisabled(!kOcctPeersAvailable);
+  ImGui::Checkbox("Open CASCADE peers", &settings_.peers);
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip(kOcctPeersAvailable
+                          ? "GeomAPI_PointsToBSpline (degree 3 and 3..8) fitted to 1441 contour "
+                            "samples, measured like ours; 1-2 s per tolerance and fit"
+                          : "Open CASCADE is not available in this build");
   if (settings_.tightest >= settings_.loosest) {
     ImGui::PushStyleColor(ImGuiCol_Text, color::error);
     ImGui::TextWrapped("The tightest tolerance must be below the loosest.");
@@ -128,6 +141,59 @@ void StudyWorkspace::draw_table() {
   ImGui::TextDisabled("computed in %.2f s", result_->seconds);
 }
 
+void StudyWorkspace::draw_peer_table() {
+  if (!result_) return;
+  section("Control points against the peer");
+  if (!result_->peers)
+    ImGui::TextDisabled("%s", missing_peers_note(StudyOptions{settings_.peers}).c_str());
+  const int columns = result_->peers ? 7 : 3;
+  const ImGuiTableFlags flags =
+      ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp;
+  if (!ImGui::BeginTable("study peers", columns, flags)) return;
+  ImGui::TableSetupColumn("ε [mm]");
+  ImGui::TableSetupColumn("exact");
+  ImGui::TableSetupColumn("deg 3");
+  if (result_->peers) {
+    ImGui::TableSetupColumn("OCCT 3");
+    ImGui::TableSetupColumn("OCCT 3..8");
+    ImGui::TableSetupColumn("exact/best");
+    ImGui::TableSetupColumn("deg 3/best");
+  }
+  ImGui::TableHeadersRow();
+  for (const StudyRow& row : result_->rows) {
+    ImGui::TableNextColumn();
+    ImGui::Text("%.0e", row.tolerance);
+    for (const StudyMethodResult* m : {&row.exact, &row.degree3}) {
+      ImGui::TableNextColumn();
+      ImGui::Text("%d", m->control_points);
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("degree %d, measured max radial error %.3g mm", m->degree,
+                          m->max_radial_error);
+    }
+    if (!result_->peers) continue;
+    for (const StudyPeerResult* p : {&row.occt_degree3, &row.occt_best}) {
+      ImGui::TableNextColumn();
+      if (!p->found) {
+        ImGui::TextDisabled("-");
+        continue;
+      }
+      ImGui::Text("%d", p->control_points);
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("degree %d, measured max radial error %.3g mm, Tol3D %.3g mm", p->degree,
+                          p->max_radial_error, p->tol3d);
+    }
+    for (double ratio : {row.ratios.exact_to_best, row.ratios.degree3_to_best}) {
+      ImGui::TableNextColumn();
+      if (std::isfinite(ratio))
+        ImGui::Text("%.2f", ratio);
+      else
+        ImGui::TextDisabled("-");
+    }
+  }
+  ImGui::EndTable();
+  ImGui::TextDisabled("exact: the compacted exact form; best: the fewest of the OCCT fits");
+}
+
 void StudyWorkspace::draw_plots(ImVec2 size) {
   if (!result_) {
     ImGui::TextDisabled(task_.busy() ? "Running the study…" : "No study yet.");
@@ -168,6 +234,13 @@ std::string StudyWorkspace::numbers() const {
   out << "tightest_rqb_control_points=" << tightest.rqb.control_points << "\n";
   out << "tightest_cubic_control_points=" << tightest.cubic.control_points << "\n";
   out << "tightest_quartic_error_mm=" << tightest.quartic.max_radial_error << "\n";
+  out << "tightest_exact_control_points=" << tightest.exact.control_points << "\n";
+  out << "tightest_degree3_control_points=" << tightest.degree3.control_points << "\n";
+  out << "peers=" << (result_->peers ? 1 : 0) << "\n";
+  if (!result_->peers) return out.str();
+  out << "tightest_occt_degree3_control_points=" << tightest.occt_degree3.control_points << "\n";
+  out << "tightest_occt_best_control_points=" << tightest.occt_best.control_points << "\n";
+  out << "tightest_exact_to_best_peer=" << tightest.ratios.exact_to_best << "\n";
   return out.str();
 }
 

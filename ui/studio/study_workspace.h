@@ -1,5 +1,6 @@
 // The study workspace: a tolerance sweep over the cam workspace's current design (the study
-// job of jobs/study: quasi-uniform quartic base, RQB base, cubic through sampled points) run in the
+// job of jobs/study: quasi-uniform quartic base, RQB base, cubic through sampled points, the
+// compacted exact form and the degree-3 profile against Open CASCADE's fits) run in the
 // background with progress and cancel, shown as control points and arcs against the tolerance,
 // and the max angle deviation of a base arc against its angle (Bae 2002, Fig. 5.4); the study
 // files (CSV, SVG, report.json) can be exported into a folder.
@@ -19,6 +20,7 @@ namespace polarform::studio {
 struct StudySettings {
   double loosest = 1e-2, tightest = 1e-6;  // mm
   int per_decade = 2;
+  bool peers = true;  // Open CASCADE's fits beside ours, where it is available
   bool operator==(const StudySettings&) const = default;
 };
 
@@ -41,6 +43,7 @@ class StudyWorkspace : public Workspace {
   void start();
   void draw_controls();
   void draw_table();
+  void draw_peer_table();
   void draw_plots(ImVec2 size);
 
   const CamWorkspace& cam_;

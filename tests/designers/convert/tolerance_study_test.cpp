@@ -1,11 +1,13 @@
 // Conversion studies: log-spaced tolerances land exactly on the decades; every method's measured
-// error meets each tolerance; tightening the tolerance never lowers a control-point count; the
-// quasi-uniform quartic arc (minimax α) deviates less from the uniform angle than the RQB arc.
+// error (the peers' included) meets each tolerance; tightening the tolerance never lowers a
+// control-point count; the quasi-uniform quartic arc (minimax α) deviates less from the uniform
+// angle than the RQB arc.
 #include "designers/convert/tolerance_study.h"
 
 #include <gtest/gtest.h>
 
 #include "designers/cam/contour_polar_function.h"
+#include "designers/convert/occt_peer.h"
 #include "src/error.h"
 #include "src/units.h"
 #include "tests/support/designers/example_cams.h"
@@ -41,11 +43,18 @@ TEST(ToleranceStudy, EveryMethodMeetsEveryTolerance) {
   for (std::size_t k = 0; k < rows.size(); ++k) {
     const StudyRow& r = rows[k];
     EXPECT_EQ(r.tolerance, tols[k]);
-    for (const StudyMethodResult* m : {&r.quartic, &r.rqb, &r.cubic}) {
+    for (const StudyMethodResult* m : {&r.quartic, &r.rqb, &r.cubic, &r.exact, &r.degree3}) {
       EXPECT_GT(m->max_radial_error, 0.0);
       EXPECT_LE(m->max_radial_error, r.tolerance);
     }
     EXPECT_EQ(r.cubic.degree, 3);
+    EXPECT_EQ(r.degree3.degree, 3);
+    EXPECT_EQ(r.peers, kOcctPeersAvailable);
+    for (const StudyPeerResult* p : {&r.occt_degree3, &r.occt_best}) {
+      if (p->found) {
+        EXPECT_LE(p->max_radial_error, r.tolerance);
+      }
+    }
     EXPECT_GT(r.quartic.arcs, 0);
     EXPECT_GT(r.rqb.arcs, r.quartic.arcs);  // RQB arcs must be shorter for the same tolerance
     if (k > 0) {

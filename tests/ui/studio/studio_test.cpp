@@ -25,6 +25,7 @@
 #include <sstream>
 #include <string>
 
+#include "designers/convert/occt_peer.h"
 #include "jobs/project/cam_project.h"
 #include "jobs/project/fit_project.h"
 #include "jobs/report/report_lines.h"
@@ -245,6 +246,16 @@ TEST_F(StudioTest, StudyWorkspaceRendersAToleranceSweep) {
   EXPECT_LE(number(n, "tightest_quartic_error_mm"), number(n, "tightest_tolerance_mm"));
   // The point of the quasi-uniform quartic base: far fewer control points than the RQB base.
   EXPECT_LT(number(n, "tightest_quartic_control_points"), number(n, "tightest_rqb_control_points"));
+  // The compact profiles beside Open CASCADE's fits at 1e-6 mm, the ratio their counts divided.
+  const double exact = number(n, "tightest_exact_control_points");
+  EXPECT_GT(exact, 0);
+  EXPECT_GT(number(n, "tightest_degree3_control_points"), 0);
+  EXPECT_EQ(number(n, "peers"), polarform::kOcctPeersAvailable ? 1 : 0);
+  if (polarform::kOcctPeersAvailable) {
+    const double best = std::min(number(n, "tightest_occt_degree3_control_points"),
+                                 number(n, "tightest_occt_best_control_points"));
+    EXPECT_NEAR(number(n, "tightest_exact_to_best_peer"), exact / best, 1e-8);
+  }
   EXPECT_EQ(error_count(r.output), 0) << r.output;
 }
 
