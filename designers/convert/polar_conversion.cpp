@@ -10,6 +10,7 @@
 #include "designers/convert/measured_knot_removal.h"
 #include "src/error.h"
 #include "src/number_text.h"
+#include "src/nurbs/curve_join.h"
 #include "src/nurbs/symbolic_product.h"
 
 namespace polarform {
@@ -43,19 +44,44 @@ std::vector<int> measure_arcs(const NurbsCurve2d& C, const PolarFunction& R,
   return failing;
 }
 
-// Replaces out's curve by the refit with the fewest control points when it has fewer and every arc,
-// measured again, meets the tolerance; false (out unchanged) otherwise.
+// The refit with the fewest control points: a closed R's in one periodic piece; an open R's piece
+// by piece between its breakpoints (each with R's end points and end tangents), joined — so that a
+// vessel head's apex stays on the axis with the head's tangent there. The coarse table first; where
+// it misses a sharp turn of R, the export's effort. Throws NumericalError if neither reaches tol.
+LimitedCurve fewest_control_points_refit(const PolarFunction& R, double tol) {
+  const auto fit = [&](const PolarFunction& piece) {
+    try {
+      return fewest_control_points(piece, kRefitDegrees, tol, kRefitEffort);
+    } catch (const NumericalError&) {
+      return fewest_control_points(piece, kRefitDegrees, tol, LimitedEffort{.finalists = 2});
+    }
+  };
+  if (R.closed() || R.breakpoints.empty()) return fit(R);
+  std::vector<double> bounds{R.start};
+  bounds.insert(bounds.end(), R.breakpoints.begin(), R.breakpoints.end());
+  bounds.push_back(R.end);
+  std::vector<NurbsCurve2d> pieces;
+  for (std::size_t k = 0; k + 1 < bounds.size(); ++k) {
+    PolarFunction piece = R;
+    piece.start = bounds[k], piece.end = bounds[k + 1];
+    piece.breakpoints.clear();
+    piece.exact.reset();
+    pieces.push_back(fit(piece).curve);
+  }
+  LimitedCurve out;
+  out.curve = join_curves(pieces);
+  out.control_points = out.curve.size();
+  return out;
+}
+
+// Replaces out's curve by the refit when it has fewer control points and every arc, measured again,
+// meets the tolerance; false (out unchanged) otherwise.
 bool refit(const PolarFunction& R, const std::vector<double>& breaks, PolarConversion& out) {
   LimitedCurve r;
   try {
-    r = fewest_control_points(R, kRefitDegrees, out.tolerance, kRefitEffort);
+    r = fewest_control_points_refit(R, out.tolerance);
   } catch (const NumericalError&) {
-    // The coarse table misses a sharp turn of R: the export's effort, then knot removal.
-    try {
-      r = fewest_control_points(R, kRefitDegrees, out.tolerance, LimitedEffort{.finalists = 2});
-    } catch (const NumericalError&) {
-      return false;
-    }
+    return false;  // knot removal stands in
   }
   if (r.control_points >= out.curve.size()) return false;
   PolarConversion refitted = out;

@@ -22,20 +22,36 @@ struct Sample {
   double weight = 1.0;
 };
 
-// A control value held fixed: an open (clamped) curve's end points are the profile's, so that the
-// curve, free to slide along the profile elsewhere, neither ends short of it nor runs past it.
+// A control value held on a line or at a point: x = value + Q·y with the components `held` of y
+// zero. An open (clamped) curve's end points are the profile's, so that the curve, free to slide
+// along the profile elsewhere, neither ends short of it nor runs past it, and its second and last
+// but one control values lie on the profile's end tangents, so that the curve leaves and meets
+// the profile's ends along them (a vessel head meets its shell tangentially).
 struct Held {
   int index;
   Eigen::Vector2d value;
+  Eigen::Matrix2d Q = Eigen::Matrix2d::Identity();  // orthonormal: (tangent, normal) or (x, y)
+  bool held[2] = {true, true};
 };
 
 std::vector<Held> held(const SplineSpace& space, const ProfileTable& R) {
   if (space.periodic()) return {};
   std::vector<Held> out;
+  const int n = space.size();
   for (int end = 0; end < 2; ++end) {
     const double t = end == 0 ? space.breaks().front() : space.breaks().back();
-    out.push_back(
-        {end == 0 ? 0 : space.size() - 1, R(t) * Eigen::Vector2d(std::cos(t), std::sin(t))});
+    double d[2];
+    R.derivatives(t, d);
+    const Eigen::Vector2d er(std::cos(t), std::sin(t)), et(-er.y(), er.x());
+    const Eigen::Vector2d point = d[0] * er;
+    out.push_back({end == 0 ? 0 : n - 1, point});
+    if (n < 4) continue;  // the end tangents' control values would be an end's or each other's
+    // r = R(θ) runs along R'·e_r + R·e_θ.
+    const Eigen::Vector2d tangent = (d[1] * er + d[0] * et).normalized();
+    Held line{end == 0 ? 1 : n - 2, point};
+    line.Q << tangent.x(), -tangent.y(), tangent.y(), tangent.x();
+    line.held[0] = false;
+    out.push_back(line);
   }
   return out;
 }
@@ -82,23 +98,45 @@ Eigen::MatrixXd solve(const SplineSpace& space, const std::vector<Sample>& ss,
         band[static_cast<std::size_t>(J) * (p + 1) + (k - j)] += s.N[j] * s.N[k] * B;
     }
   }
-  // Held values: their columns move to the right-hand side, their rows become x_J = value.
+  // Held values, x_h = value + Q·y_h: the value's share of every equation moves to the
+  // right-hand side, the blocks of h turn into Q's frame, and each held component of y_h gets the
+  // equation y = 0 (its row and column cleared).
+  const auto block = [&](int J, int d) -> Eigen::Matrix2d& {
+    return band[static_cast<std::size_t>(J) * (p + 1) + d];
+  };
   for (const Held& h : hold) {
     for (int J = 0; J < n; ++J)
       for (int d = 0; d <= p; ++d) {
         const int K = (J + d) % n;
-        Eigen::Matrix2d& M = band[static_cast<std::size_t>(J) * (p + 1) + d];
         if (J == h.index && K == h.index) {
-          M.setIdentity();
-          rhs.segment<2>(2 * J) = h.value;
+          rhs.segment<2>(2 * J) -= block(J, d) * h.value;
         } else if (K == h.index) {
-          rhs.segment<2>(2 * J) -= M * h.value;
-          M.setZero();
+          rhs.segment<2>(2 * J) -= block(J, d) * h.value;
         } else if (J == h.index) {
-          rhs.segment<2>(2 * K) -= M.transpose() * h.value;
-          M.setZero();
+          rhs.segment<2>(2 * K) -= block(J, d).transpose() * h.value;
         }
       }
+    rhs.segment<2>(2 * h.index) = h.Q.transpose() * rhs.segment<2>(2 * h.index);
+    for (int J = 0; J < n; ++J)
+      for (int d = 0; d <= p; ++d) {
+        const int K = (J + d) % n;
+        Eigen::Matrix2d& M = block(J, d);
+        if (J == h.index && K == h.index) {
+          M = h.Q.transpose() * M * h.Q;
+          for (int c = 0; c < 2; ++c)
+            if (h.held[c]) M.row(c).setZero(), M.col(c).setZero(), M(c, c) = 1.0;
+        } else if (K == h.index) {
+          M = M * h.Q;
+          for (int c = 0; c < 2; ++c)
+            if (h.held[c]) M.col(c).setZero();
+        } else if (J == h.index) {
+          M = h.Q.transpose() * M;
+          for (int c = 0; c < 2; ++c)
+            if (h.held[c]) M.row(c).setZero();
+        }
+      }
+    for (int c = 0; c < 2; ++c)
+      if (h.held[c]) rhs(2 * h.index + c) = 0.0;
   }
   std::vector<Eigen::Triplet<double>> triplets;
   triplets.reserve(band.size() * 8);
@@ -123,8 +161,9 @@ Eigen::MatrixXd solve(const SplineSpace& space, const std::vector<Sample>& ss,
   if (!analysed) solver.analyzePattern(A);
   solver.factorize(A);
   if (solver.info() != Eigen::Success) throw NumericalError("degree-limited fit: singular system");
-  const Eigen::VectorXd x = solver.solve(rhs);
-  return Eigen::Map<const Eigen::MatrixXd>(x.data(), 2, n);
+  Eigen::MatrixXd x = Eigen::Map<const Eigen::MatrixXd>(solver.solve(rhs).eval().data(), 2, n);
+  for (const Held& h : hold) x.col(h.index) = h.value + h.Q * x.col(h.index);
+  return x;
 }
 
 Eigen::Vector2d curve_point(const Sample& s, const Eigen::MatrixXd& coefs, int p, int n) {

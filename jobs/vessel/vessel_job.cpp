@@ -50,9 +50,6 @@ VesselConversionStage convert_vessel_head(const VesselSolveStage& solved) {
   } else {
     ConversionOptions options;
     options.tolerance = solved.project.tolerance;
-    // Knot removal between R's breakpoints: the apex and the junctions stay exact, with R's
-    // tangents (the refit does not hold tangents yet).
-    options.compaction = Compaction::between_breakpoints;
     c.conversion = convert_polar_function(solved.solution.profile, options);
     c.profile = c.conversion->curve;
     c.arcs = static_cast<int>(c.conversion->arcs.size());

@@ -67,7 +67,6 @@ namespace {
 struct Contour {
   std::string name;
   PolarFunction R;
-  bool cam = true;  // a plate cam's contour (else a vessel meridian)
 };
 
 // Plate cams not among the examples: other laws (harmonic and constant-acceleration with their
@@ -113,8 +112,7 @@ std::vector<Contour> other_cams() {
   designs[4].second.segments = {segment(K::Rise, 0, 180, 12, L::Polynomial345),
                                 segment(K::Return, 180, 360, 12, L::Polynomial345)};
   std::vector<Contour> out;
-  for (const auto& [name, design] : designs)
-    out.push_back({name, cam_profile_function(design), true});
+  for (const auto& [name, design] : designs) out.push_back({name, cam_profile_function(design)});
   return out;
 }
 
@@ -160,7 +158,7 @@ std::vector<Contour> other_heads() {
     const VesselSolveStage s = solve_vessel_head(read_vessel_project(file, warnings));
     EXPECT_TRUE(warnings.empty()) << name;
     EXPECT_FALSE(s.solution.exact) << name;
-    out.push_back({name, s.solution.profile, false});
+    out.push_back({name, s.solution.profile});
   }
   return out;
 }
@@ -169,12 +167,11 @@ std::vector<Contour> contours() {
   std::vector<Contour> out;
   for (const std::string& name : cam_job_test::kExampleNames) {
     const CamProject p = cam_job_test::load_example(name);
-    if (p.cam.type == CamType::Plate) out.push_back({name, cam_profile_function(p.cam), true});
+    if (p.cam.type == CamType::Plate) out.push_back({name, cam_profile_function(p.cam)});
   }
   for (const std::string& file : vessel_job_test::example_names()) {
     const VesselSolveStage s = solve_vessel_head(vessel_job_test::load_example(file));
-    if (!s.solution.exact)
-      out.push_back({file.substr(0, file.size() - 4), s.solution.profile, false});
+    if (!s.solution.exact) out.push_back({file.substr(0, file.size() - 4), s.solution.profile});
   }
   for (std::vector<Contour> more : {other_cams(), other_heads()})
     for (Contour& c : more) out.push_back(std::move(c));
@@ -240,14 +237,25 @@ const std::map<std::string, std::array<int, 3>> kOcctBest = {
     {"ellipsoidal_1.5_1_degree_4", {15, 33, 53}},
 };
 
-// The cam designs' exact form (plate cams export the refit): no more control points than Open
-// CASCADE's best, but for one known miss — the 3-4-5 rise-return without dwells at 1 µm, 16
-// against OCCT's 15 (degree 8, 7 spans; a periodic spline of degree p needs p + 1 spans). Vessel
-// meridians keep knot removal between breakpoints (their tangents at the apex and the junctions),
-// so they are measured but not held to the peer.
+// The exact form (the product refitted, as plate cams and vessel heads export it): no more control
+// points than Open CASCADE's best, but for known misses, each held to its count:
+// - the 3-4-5 rise-return without dwells at 1 µm, 16 against OCCT's 15 (degree 8, 7 spans; a
+//   periodic spline of degree p needs p + 1 spans);
+// - near-circular heads at the loose tolerances: a meridian is refitted half by half, each half
+//   with its end points and end tangents (tangent to the shell at the junctions, level on the axis
+//   at the apex), and joined at the apex, where OCCT's single unconstrained fit of the whole
+//   meridian needs no joint — the hemisphere 9 against 7 at 10 and 1 µm (two quartic Béziers
+//   against one of degree 6), the 2:1 ellipsoid 15 against 13 and the 3:1 ellipsoid 21 against 15
+//   at 10 µm.
 int exact_form_bound(const std::string& name, int i, int occt_best) {
-  if (name == "345_no_dwell_roller" && i == 1) return 16;
-  return occt_best;
+  static const std::map<std::pair<std::string, int>, int> known_misses = {
+      {{"345_no_dwell_roller", 1}, 16},
+      {{"hemispherical", 0}, 9},
+      {{"hemispherical", 1}, 9},
+      {{"ellipsoidal_2_1", 0}, 15},
+      {{"ellipsoidal_3_1", 0}, 21}};
+  const auto miss = known_misses.find({name, i});
+  return miss == known_misses.end() ? occt_best : miss->second;
 }
 
 TEST(PeerCounts, ExactFormNoMoreControlPointsThanOcctsBest) {
@@ -265,9 +273,7 @@ TEST(PeerCounts, ExactFormNoMoreControlPointsThanOcctsBest) {
       EXPECT_LE(distance(exact.curve, c.R), eps);
       ASSERT_EQ(exact.steps.size(), 2u);
       EXPECT_EQ(exact.steps[1].name, "refit");
-      if (c.cam) {
-        EXPECT_LE(exact.curve.size(), exact_form_bound(c.name, i, kOcctBest.at(c.name)[i]));
-      }
+      EXPECT_LE(exact.curve.size(), exact_form_bound(c.name, i, kOcctBest.at(c.name)[i]));
       char row[256];
       std::snprintf(row, sizeof row, "| %s | %g | %d (degree %d) | %d → %d | %d |\n",
                     c.name.c_str(), eps, exact.curve.size(), exact.curve.degree(),
@@ -352,7 +358,7 @@ TEST(PeerCounts, EveryExampleAtThreeTolerances) {
                       took.count());
         table += row;
       }
-      if (best > 0 && c.cam) EXPECT_LE(exact.curve.size(), exact_form_bound(c.name, i, best));
+      if (best > 0) EXPECT_LE(exact.curve.size(), exact_form_bound(c.name, i, best));
 #endif
       table += "\n";
     }

@@ -1,12 +1,14 @@
 // The vessel job on the bundled examples and on bad designs: the measured conversion error meets
 // the tolerance (also under an override), a hemisphere stays on its sphere through conversion and
 // revolution with the membrane stresses pR/2t of a sphere, and infeasible designs are InputErrors.
+#include "jobs/vessel/vessel_job.h"
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
-#include "jobs/vessel/vessel_job.h"
 #include "src/error.h"
 #include "tests/support/jobs/vessel_job_support.h"
 
@@ -40,15 +42,44 @@ TEST(VesselJob, EveryExampleMeetsItsTolerance) {
     }
     EXPECT_EQ(r.converted.conversion->tolerance, project.tolerance) << name;
     EXPECT_EQ(r.converted.conversion->max_radial_error, r.converted.max_radial_error) << name;
+    // The product C = F·B (R's degree + 4, quartic quasi-uniform arcs, DESIGN §4.1), refitted
+    // with fewer control points: each half of the meridian (junction to apex, apex to junction)
+    // with R's end points and end tangents.
+    const PolarConversion& c = *r.converted.conversion;
+    const int synthesis_degree = r.solved.solution.minimum_stress
+                                     ? r.solved.solution.minimum_stress->settings.degree
+                                     : project.design.synthesis.degree;
+    EXPECT_EQ(c.function.degree(), synthesis_degree) << name;
+    ASSERT_EQ(c.steps.size(), 2u) << name;
+    EXPECT_EQ(c.steps[1].name, "refit") << name;
+    EXPECT_LT(c.curve.size(), c.steps[0].control_points) << name;
+    EXPECT_GE(c.curve.degree(), 3) << name;
+    EXPECT_LE(c.curve.degree(), 6) << name;
     if (const auto& m = r.solved.solution.minimum_stress) {
       EXPECT_GT(m->head.iterations, 0) << name;
-      EXPECT_EQ(r.converted.conversion->curve.degree(), m->settings.degree + 4) << name;
       continue;
     }
     EXPECT_GT(r.solved.solution.synthesis.iterations, 0) << name;
     EXPECT_LE(r.solved.solution.synthesis.max_violation, 1e-6) << name;
-    // The converted profile's degree is R's degree + 4 (quartic quasi-uniform arcs, DESIGN §4.1).
-    EXPECT_EQ(r.converted.conversion->curve.degree(), project.design.synthesis.degree + 4) << name;
+  }
+}
+
+// The refitted meridian meets the shell tangentially (vertical at junction A, where R' = 0) and
+// crosses the axis at θ = π/2 exactly, level there (R'(π/2) = 0 on every example head), so that
+// the revolved head is G1 at its apex and with the cylinder.
+TEST(VesselJob, RefittedMeridianIsTangentToTheShellAndLevelAtTheApex) {
+  for (const std::string& name : example_names()) {
+    const VesselJobResult r = run_vessel_job(load_example(name));
+    if (r.solved.solution.exact) continue;
+    const NurbsCurve2d& c = r.converted.profile;
+    const auto at_start = c.derivatives(c.front(), 1);
+    EXPECT_LE(std::abs(at_start[1].x()), 1e-12 * at_start[1].norm()) << name;
+    EXPECT_NEAR(r.converted.surfaces.apex_parameter, std::numbers::pi / 2, 1e-12) << name;
+    for (double side : {-1.0, 1.0}) {  // one-sided tangents at the apex knot
+      const auto apex = c.derivatives(std::numbers::pi / 2 + side * 1e-13, 1);
+      EXPECT_LE(std::abs(apex[1].y()), 1e-9 * apex[1].norm()) << name;
+    }
+    EXPECT_LE(std::abs(c(std::numbers::pi / 2).x()), 1e-9) << name;
   }
 }
 
@@ -65,7 +96,8 @@ TEST(VesselJob, ToleranceOverrideIsMet) {
 }
 
 // The hemisphere's curvature 1/R everywhere with the default end conditions is the sphere: the
-// synthesis returns R = 500 (to 1e-10 in the synthesis tests), the converter makes it exactly.
+// synthesis returns R = 500 (to 1e-10 in the synthesis tests), the converter's product makes it
+// exactly and its refit within the tolerance.
 TEST(VesselJob, HemisphereStaysOnItsSphere) {
   const VesselJobResult r = run_vessel_job(load_example("hemispherical.xml"));
   const double R = 500.0;
@@ -75,7 +107,8 @@ TEST(VesselJob, HemisphereStaysOnItsSphere) {
   double worst = 0.0;
   for (int k = 0; k <= 4000; ++k)
     worst = std::max(worst, std::abs(c(c.front() + (c.back() - c.front()) * k / 4000).norm() - R));
-  EXPECT_LE(worst, 1e-7);
+  EXPECT_LE(worst, 1e-3);
+  EXPECT_LT(r.converted.conversion->steps[0].max_radial_error, 1e-7);  // the product: exact
   const NurbsSurface& head = r.converted.surfaces.head;
   double worst_surface = 0.0, lowest = 0.0;
   for (int i = 0; i <= 36; ++i)
@@ -85,7 +118,7 @@ TEST(VesselJob, HemisphereStaysOnItsSphere) {
       worst_surface = std::max(worst_surface, std::abs(p.norm() - R));
       lowest = std::min(lowest, p.z());
     }
-  EXPECT_LE(worst_surface, 1e-7);
+  EXPECT_LE(worst_surface, 1e-3);
   EXPECT_GE(lowest, -1e-9);
   // The cylinder from z = 0 down to −length at radius R.
   const NurbsSurface& cylinder = r.converted.surfaces.cylinder;
