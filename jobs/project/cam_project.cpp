@@ -8,6 +8,7 @@
 
 #include "export/atomic_file.h"
 #include "export/xml_escape.h"
+#include "jobs/project/compaction_attribute.h"
 #include "jobs/project/motion_table_csv.h"
 #include "jobs/project/xml_reader.h"
 #include "src/error.h"
@@ -290,10 +291,7 @@ void read_conversion(const XmlElementReader& r, double unit, CamProject& p) {
   p.conversion.alpha = r.choice("alpha", {"minimax", "printed"}, "minimax") == "printed"
                            ? AlphaRule::printed
                            : AlphaRule::minimax;
-  const std::string compaction = r.choice("compaction", {"refit", "knot-removal", "none"}, "refit");
-  p.conversion.compaction = compaction == "none"           ? Compaction::none
-                            : compaction == "knot-removal" ? Compaction::full
-                                                           : Compaction::refit;
+  p.conversion.compaction = read_compaction(r);
   if (r.has("max-degree")) {
     const int degree = r.integer("max-degree", 0);
     if (degree < 1) r.fail("max-degree", "an integer >= 1, or empty for the exact degree");

@@ -6,6 +6,7 @@
 
 #include "designers/convert/polar_conversion.h"
 #include "export/atomic_file.h"
+#include "jobs/project/compaction_attribute.h"
 #include "jobs/project/xml_reader.h"
 #include "src/error.h"
 #include "src/nurbs/knots.h"
@@ -325,6 +326,7 @@ VesselProject read_document(const XmlDocument& doc, std::vector<std::string>& wa
         if (cr.has("tolerance")) p.tolerance = cr.positive("tolerance") * unit;
         if (p.tolerance < kMinTolerance)
           cr.fail("tolerance", "a tolerance >= " + number(kMinTolerance) + " mm");
+        p.compaction = read_compaction(cr);
       });
   });
   settle_unknown_names(reader.unknown(), policy, warnings);
@@ -433,6 +435,7 @@ std::string vessel_project_xml(const VesselProject& p) {
   attribute(out, "max-iterations", std::to_string(s.max_iterations));
   out << "/>\n  </vessel>\n  <conversion";
   attribute(out, "tolerance", p.tolerance);
+  attribute(out, "compaction", compaction_name(p.compaction));
   out << "/>\n</polarform>\n";
   return out.str();
 }

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "designers/convert/polar_conversion.h"
 #include "designers/vessel/vessel_design.h"
 #include "jobs/project/unknown_names.h"
 
@@ -32,6 +33,7 @@ struct VesselProject {
   VesselDesign design;
   std::vector<CurvatureEntry> curvatures;
   double tolerance = 1e-3;  // conversion tolerance, mm
+  Compaction compaction = Compaction::refit;  // how the converted meridian is made compact
 
   bool operator==(const VesselProject&) const = default;
 };

@@ -50,6 +50,7 @@ VesselConversionStage convert_vessel_head(const VesselSolveStage& solved) {
   } else {
     ConversionOptions options;
     options.tolerance = solved.project.tolerance;
+    options.compaction = solved.project.compaction;
     c.conversion = convert_polar_function(solved.solution.profile, options);
     c.profile = c.conversion->curve;
     c.arcs = static_cast<int>(c.conversion->arcs.size());

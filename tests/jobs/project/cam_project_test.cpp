@@ -188,7 +188,37 @@ TEST(CamProject, ReadsTheRollerExample) {
   EXPECT_EQ(p.cam.segments[3].law, MotionLaw::Polynomial4567);
   EXPECT_EQ(p.conversion.tolerance, 0.001);
   EXPECT_EQ(p.conversion.base, ArcKind::quartic);
+  EXPECT_EQ(p.conversion.compaction, Compaction::refit);
   EXPECT_FALSE(p.max_degree);
+}
+
+// <conversion compaction="…">: each of the three values read and saved; another value is an error
+// naming the attribute and the allowed values.
+TEST(CamProject, CompactionIsReadAndSaved) {
+  const std::string roller = slurp(kExamples / "roller.xml");
+  const std::size_t at = roller.find("<conversion") + std::string("<conversion").size();
+  for (const auto& [name, compaction] :
+       {std::pair{"refit", Compaction::refit}, std::pair{"knot-removal", Compaction::full},
+        std::pair{"none", Compaction::none}}) {
+    std::string xml = roller;
+    xml.insert(at, std::string(" compaction=\"") + name + "\"");
+    std::vector<std::string> warnings;
+    const CamProject p = parse_cam_project(xml, "c.xml", warnings);
+    EXPECT_EQ(p.conversion.compaction, compaction) << name;
+    EXPECT_NE(cam_project_xml(p).find(std::string("compaction=\"") + name + "\""),
+              std::string::npos);
+    EXPECT_TRUE(parse_cam_project(cam_project_xml(p), "saved.xml", warnings) == p) << name;
+  }
+  std::string bad = roller;
+  bad.insert(at, " compaction=\"fast\"");
+  std::vector<std::string> warnings;
+  try {
+    parse_cam_project(bad, "c.xml", warnings);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("compaction"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("knot-removal"), std::string::npos) << e.what();
+  }
 }
 
 TEST(CamProject, PolynomialConstraintsSetTheirOrder) {

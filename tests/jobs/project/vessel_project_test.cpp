@@ -60,6 +60,7 @@ VesselProject odd_project() {
   p.design.length = 1.0 / 3.0;
   p.design.thickness = 0.1;
   p.design.pressure = 1e-7;
+  p.compaction = Compaction::none;
   p.curvatures = {{0.0, 1.0 / 612.345678901234, false, 1.0},
                   {33.3333333333333, 0.0017, false, 2.5},
                   {90.0, -2450.5, true, 1e-3},
@@ -208,6 +209,7 @@ TEST(VesselProject, BareVesselRootAndDefaults) {
   EXPECT_EQ(p.design.synthesis, defaults);
   EXPECT_FALSE(p.design.end_a);
   EXPECT_EQ(p.tolerance, 1e-3);
+  EXPECT_EQ(p.compaction, Compaction::refit);
   EXPECT_EQ(p.design.preset_targets, 48);
 }
 
@@ -338,7 +340,7 @@ TEST(VesselProject, UnknownNamesAreErrorsOrLenientWarnings) {
         "t.xml:4: unknown attribute 'crown' on <head> (known here: ",
         "t.xml:2: unknown attribute 'colour' on <vessel> (known here: ",
         "t.xml:5: unknown element <nozzle> in <vessel> (known here: ",
-        "t.xml:7: unknown attribute 'base' on <conversion> (known here: tolerance)"})
+        "t.xml:7: unknown attribute 'base' on <conversion> (known here: compaction, tolerance)"})
     EXPECT_NE(error.find(line), std::string::npos) << line << " in " << error;
   parse_vessel_project(xml, "t.xml", warnings, UnknownNames::warn);
   ASSERT_EQ(warnings.size(), 5u);
@@ -347,7 +349,8 @@ TEST(VesselProject, UnknownNamesAreErrorsOrLenientWarnings) {
             0u)
       << warnings[0];
   EXPECT_EQ(warnings[4],
-            "t.xml:7: unknown attribute 'base' on <conversion> ignored (known here: tolerance)");
+            "t.xml:7: unknown attribute 'base' on <conversion> ignored (known here: compaction, "
+            "tolerance)");
 }
 
 }  // namespace
