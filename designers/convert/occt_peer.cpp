@@ -17,6 +17,7 @@ namespace {
 
 constexpr int kSamples = 1441;
 constexpr double kTol3dLadder[] = {2.0, 1.4, 1.0, 0.7, 0.5, 0.35, 0.25};
+constexpr int kMeasureSamples = 20000;
 
 TColgp_Array1OfPnt contour_samples(const PolarFunction& R) {
   TColgp_Array1OfPnt points(1, kSamples);
@@ -67,7 +68,9 @@ PeerCurve occt_points_to_bspline(const PolarFunction& R, int deg_min, int deg_ma
   for (double factor : kTol3dLadder) {
     std::optional<NurbsCurve2d> c = fit(points, R, deg_min, deg_max, factor * tol);
     if (!c) continue;
-    const double error = profile_error(*c, R, c->front(), c->back()).max_radial;
+    // Measured densely (OCCT places its knots for its samples, not for the error between them):
+    // 20000 points over the curve, at least samples_per_span in each span, maxima refined.
+    const double error = profile_error(*c, R, c->front(), c->back(), kMeasureSamples).max_radial;
     if (error <= tol) return {true, c->size(), c->degree(), error, factor * tol, std::move(*c)};
   }
   return {};
