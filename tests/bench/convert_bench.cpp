@@ -1,6 +1,7 @@
 // Benchmarks of the cam conversion path: synthesis + conversion + verification of the roller
-// example at 1 µm (issue target < 5 ms), one UI design update at 10 µm (target < 2 ms) and the
-// degree-3 profile at 1 µm.
+// example at 1 µm (issue 14's target: <= 5 ms; with the refit that makes the profile compact it
+// measured 21 ms on the 2-core CI machine, 2 ms of them the product C = F·B), one UI design update
+// at 10 µm (target < 2 ms, measured 14 ms with the refit) and the degree-3 profile at 1 µm.
 #include <benchmark/benchmark.h>
 
 #include <numbers>
