@@ -63,8 +63,7 @@ std::optional<double> fold(const NurbsCurve2d& C, const std::vector<double>& bre
 
 // The result, its error measured against R itself over every span (conversion_error.h),
 // samples_per_span + 1 samples per span and every local maximum of the samples refined by golden
-// section; `at` receives
-// the parameter of the largest error (infinite at a fold).
+// section; `at` receives the parameter of the largest error (infinite at a fold).
 LimitedCurve measure(const SplineSpace& s, const PolarFunction& R, const Eigen::MatrixXd& coefs,
                      double* at = nullptr) {
   LimitedCurve out{s.curve(coefs), 0, 0, 0};

@@ -16,9 +16,11 @@ namespace polarform {
 // knot placement, the Lawson steps of each minimax fit and the knot removals tried. The defaults
 // are the degree-limited export's; the converter's refit (polar_conversion.h) runs leaner.
 struct LimitedEffort {
-  int table_intervals = 4096;
+  int table_intervals = 4096;  // ProfileTable's
+  // Rounds of knot placement on plain fits (one solve each): the equidistribution converges
+  // slowly, 30 rounds give about 4 % fewer control points than 6 on the examples.
   int placement_rounds = 30;
-  int lawson_steps = 8;
+  int lawson_steps = 8;  // of each minimax fit (more gain little)
   std::size_t removal_tries = 10;
   // fewest_control_points: how many degrees are fitted to the end (those whose placement predicts
   // the fewest control points; a degree that fails makes way for the next).

@@ -25,9 +25,10 @@ inline constexpr double kMinTolerance = 1e-9;
 // exactly F·B, e.g. when F and B are used apart, as for a cylindrical cam's track); by removing
 // the knots of C but those at R's breakpoints (which stay exact arc junctions); by removing any
 // knot; by a refit — the least-squares B-spline of degree 3 to 6 with knots by need and the
-// fewest control points (degree_limited.h, periodic when R is closed, R's end points kept when
-// open), measured against R, replacing C when it has fewer control points than C (any knot
-// removed otherwise).
+// fewest control points (degree_limited.h; periodic when R is closed; when R is open, fitted
+// piece by piece between R's breakpoints with R's end points and end tangents and joined there),
+// measured against R, replacing C when it has fewer control points than C (any knot removed
+// otherwise).
 enum class Compaction { none, between_breakpoints, full, refit };
 
 struct ConversionOptions {

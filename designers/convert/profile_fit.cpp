@@ -108,9 +108,7 @@ Eigen::MatrixXd solve(const SplineSpace& space, const std::vector<Sample>& ss,
     for (int J = 0; J < n; ++J)
       for (int d = 0; d <= p; ++d) {
         const int K = (J + d) % n;
-        if (J == h.index && K == h.index) {
-          rhs.segment<2>(2 * J) -= block(J, d) * h.value;
-        } else if (K == h.index) {
+        if (K == h.index) {  // the diagonal block too
           rhs.segment<2>(2 * J) -= block(J, d) * h.value;
         } else if (J == h.index) {
           rhs.segment<2>(2 * K) -= block(J, d).transpose() * h.value;
@@ -161,7 +159,8 @@ Eigen::MatrixXd solve(const SplineSpace& space, const std::vector<Sample>& ss,
   if (!analysed) solver.analyzePattern(A);
   solver.factorize(A);
   if (solver.info() != Eigen::Success) throw NumericalError("degree-limited fit: singular system");
-  Eigen::MatrixXd x = Eigen::Map<const Eigen::MatrixXd>(solver.solve(rhs).eval().data(), 2, n);
+  const Eigen::VectorXd y = solver.solve(rhs);
+  Eigen::MatrixXd x = Eigen::Map<const Eigen::MatrixXd>(y.data(), 2, n);
   for (const Held& h : hold) x.col(h.index) = h.value + h.Q * x.col(h.index);
   return x;
 }

@@ -43,7 +43,7 @@ struct StudyPeerRatios {
 struct StudyRow {
   double tolerance = 0.0;  // mm
   StudyMethodResult quartic, rqb, cubic;
-  StudyMethodResult exact;    // the exact form with the converter's default knot removal
+  StudyMethodResult exact;  // the exact form as compacted by default (refitted, polar_conversion.h)
   StudyMethodResult degree3;  // the degree-3 profile, knots by need (degree_limited.h)
   bool peers = false;         // the peer fits below were run
   StudyPeerResult occt_degree3, occt_best;  // GeomAPI_PointsToBSpline, degree 3 and 3..8
