@@ -8,7 +8,7 @@
 
 #include "designers/cam/groove_height_fit.h"
 #include "designers/cam/groove_wall.h"
-#include "designers/convert/golden_section.h"
+#include "designers/convert/refined_maximum.h"
 #include "src/error.h"
 #include "src/number_text.h"
 #include "src/nurbs/common_basis.h"

@@ -1,10 +1,10 @@
 #include "designers/convert/conversion_error.h"
 
-#include "designers/convert/golden_section.h"
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+
+#include "designers/convert/refined_maximum.h"
 
 namespace polarform {
 
@@ -28,7 +28,7 @@ int samples_per_span(int degree) { return std::min(32, 4 * (degree + 1)); }
 double radial_error_at(const NurbsCurve2d& C, const PolarFunction& R, double u, double near,
                        double* psi_out) {
   const Eigen::Vector2d p = C(u);
-  const double psi = near + std::remainder(std::atan2(p.y(), p.x()) - near, kTwoPi);
+  const double psi = polar_angle_near(p.x(), p.y(), near);
   if (psi_out) *psi_out = psi;
   return std::abs(p.norm() - R(into_domain(R, psi)));
 }

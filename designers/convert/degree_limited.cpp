@@ -4,17 +4,19 @@
 #include <Eigen/SparseLU>
 #include <algorithm>
 #include <cmath>
+#include <future>
 #include <limits>
 #include <numbers>
 #include <numeric>
 #include <optional>
+#include <stop_token>
 #include <string>
 
 #include "designers/convert/conversion_error.h"
-#include "designers/convert/golden_section.h"
 #include "designers/convert/knot_placement.h"
 #include "designers/convert/profile_fit.h"
 #include "designers/convert/profile_table.h"
+#include "designers/convert/refined_maximum.h"
 #include "designers/convert/spline_space.h"
 #include "src/error.h"
 #include "src/number_text.h"
@@ -47,14 +49,13 @@ Eigen::Vector2d profile_point(const PolarFunction& R, double psi) {
 // if any: a polar profile is star-shaped about the origin, so a fold or loop of the curve (which
 // the radial error alone would not see) is a miss.
 std::optional<double> fold(const NurbsCurve2d& C, const std::vector<double>& breaks) {
-  constexpr double kTwoPi = 2 * std::numbers::pi;
   double last = 0.0;
   bool first = true;
   for (std::size_t j = 0; j + 1 < breaks.size(); ++j)
     for (int k = first ? 0 : 1; k <= 8; ++k) {
       const double u = breaks[j] + (breaks[j + 1] - breaks[j]) * k / 8;
       const Eigen::Vector2d c = C(u);
-      const double psi = u + std::remainder(std::atan2(c.y(), c.x()) - u, kTwoPi);
+      const double psi = polar_angle_near(c.x(), c.y(), u);
       if (!first && !(psi > last)) return u;
       last = psi, first = false;
     }
@@ -89,7 +90,9 @@ LimitedCurve measure(const SplineSpace& s, const PolarFunction& R, const Eigen::
   return out;
 }
 
-// One fit on given breaks with its span errors measured on the table.
+// One fit on given breaks with its span errors measured on the table: at the fit's samples, and
+// densely (2·per_span + 1 points per span, the samples among them) when those meet `accept` — a
+// fit whose samples miss it misses it densely too.
 struct Fit {
   SplineSpace space;
   Eigen::MatrixXd coefs;
@@ -98,12 +101,14 @@ struct Fit {
 };
 
 Fit fit_on(std::vector<double> breaks, bool periodic, const ProfileTable& table, int degree,
-           const ProfileFitOptions& options) {
+           const ProfileFitOptions& options, double accept) {
   SplineSpace space(degree, periodic, std::move(breaks));
-  Eigen::MatrixXd coefs = fit_profile(space, table, options);
-  std::vector<double> errors = span_errors(space, coefs, table, 2 * options.per_span);
+  FittedProfile f = fit_profile(space, table, options);
+  std::vector<double> errors = std::move(f.sample_errors);
+  if (*std::max_element(errors.begin(), errors.end()) <= accept)
+    errors = span_errors(space, f.coefs, table, 2 * options.per_span);
   const double max = *std::max_element(errors.begin(), errors.end());
-  return {std::move(space), std::move(coefs), std::move(errors), max};
+  return {std::move(space), std::move(f.coefs), std::move(errors), max};
 }
 
 // The density's mass over each span: error^(1/(p+1)), with a floor of a tenth of the mean
@@ -171,17 +176,30 @@ LimitedCurve interpolation(const PolarFunction& R, int degree, int points) {
   return measure(s, R, solver.solve(rhs).transpose());
 }
 
+// The fits of steps 2-4: 2p + 2 samples per span, Lawson's steps toward the minimax.
+ProfileFitOptions minimax_options(int p, const LimitedEffort& effort) {
+  return {2 * p + 2, kSlide, effort.lawson_steps};
+}
+
+void throw_if_stopped(const std::stop_token& stop) {
+  if (stop.stop_requested()) throw NumericalError("degree-limited profile: stopped");
+}
+
 // Step 1 of approximate_polar_curve: the density of need for degree p (its breaks and the mass
-// over each span), the spans it asks for, and the breaks every fit keeps.
+// over each span), the spans it asks for, the breaks every fit keeps, and the minimax fit on those
+// spans with the control points it predicts.
 struct Placement {
   int degree = 0;
   std::vector<double> fixed, breaks, mass;
   int spans = 0, fewest = 0;
-  int predicted_control_points() const { return spans + degree; }  // of the clamped curve
+  std::optional<Fit> minimax;
+  // Of the clamped curve, if the minimax error scales like h^(p+1): the plain fits that placed
+  // the knots miss the minimax fit's gain, which differs from degree to degree.
+  double predicted_control_points = 0.0;
 };
 
 Placement place_knots(const PolarFunction& R, const ProfileTable& table, int p, double tol,
-                      const LimitedEffort& effort) {
+                      const LimitedEffort& effort, const std::stop_token& stop) {
   const bool periodic = R.closed();
   Placement out;
   out.degree = p;
@@ -195,33 +213,44 @@ Placement place_knots(const PolarFunction& R, const ProfileTable& table, int p, 
   std::vector<double> breaks = uniform_breaks(R.start, R.end, std::max(16, 2 * out.fewest));
   std::vector<double> mass;
   for (std::size_t j = 0; j + 1 < breaks.size(); ++j) mass.push_back(breaks[j + 1] - breaks[j]);
+  // The rounds need each span's error roughly (its (p+1)-th root): the samples' suffice, but for
+  // the last round's, which sizes and places every later fit.
+  constexpr double kSamplesOnly = -1.0, kDense = std::numeric_limits<double>::infinity();
   Fit f = fit_on(equidistribute(breaks, mass, static_cast<int>(mass.size()), out.fixed), periodic,
-                 table, p, plain);
+                 table, p, plain, kSamplesOnly);
   mass = need(f);
   for (int round = 0; round < effort.placement_rounds; ++round) {
+    throw_if_stopped(stop);
     const double total = std::accumulate(mass.begin(), mass.end(), 0.0);
     const double n = std::ceil(total / std::pow(kShare * tol, 1.0 / (p + 1)));
     f = fit_on(
         equidistribute(f.space.breaks(), mass,
                        std::clamp<int>(static_cast<int>(std::min(n, 1e9)), out.fewest, kMaxSpans),
                        out.fixed),
-        periodic, table, p, plain);
+        periodic, table, p, plain,
+        round + 1 == effort.placement_rounds || n >= kMaxSpans ? kDense : kSamplesOnly);
     mass = need(f);
     if (n >= kMaxSpans) break;  // the span budget decides (step 2)
   }
   out.breaks = f.space.breaks();
   out.mass = std::move(mass);
   out.spans = f.space.spans();
+  throw_if_stopped(stop);
+  out.minimax = fit_on(equidistribute(out.breaks, out.mass, out.spans, out.fixed), periodic, table,
+                       p, minimax_options(p, effort), kShare * tol);
+  out.predicted_control_points =
+      p + std::max<double>(out.fewest,
+                           out.spans * std::pow(out.minimax->max / (kShare * tol), 1.0 / (p + 1)));
   return out;
 }
 
 // Steps 2-4 of approximate_polar_curve on the placement of step 1.
 LimitedCurve fit_by_need(const PolarFunction& R, const ProfileTable& table, const Placement& place,
-                         double tol, const LimitedEffort& effort) {
+                         double tol, const LimitedEffort& effort, const std::stop_token& stop) {
   const int p = place.degree, fewest = place.fewest;
   const bool periodic = R.closed();
   const std::vector<double>& fixed = place.fixed;
-  const ProfileFitOptions minimax{2 * p + 2, kSlide, effort.lawson_steps};
+  const ProfileFitOptions minimax = minimax_options(p, effort);
   const auto fail = [&] {
     return NumericalError("degree-limited profile: no degree-" + std::to_string(p) +
                           " spline with up to " + std::to_string(kMaxSpans) + " spans meets " +
@@ -231,10 +260,12 @@ LimitedCurve fit_by_need(const PolarFunction& R, const ProfileTable& table, cons
   // 2. The fewest spans on that density whose minimax fit meets the tolerance: grown until one
   // does, then bisected.
   const auto try_spans = [&](int n) {
-    return fit_on(equidistribute(place.breaks, place.mass, n, fixed), periodic, table, p, minimax);
+    throw_if_stopped(stop);
+    return fit_on(equidistribute(place.breaks, place.mass, n, fixed), periodic, table, p, minimax,
+                  kShare * tol);
   };
   int hi = place.spans;
-  Fit best = try_spans(hi);
+  Fit best = *place.minimax;  // try_spans(hi)
   while (best.max > kShare * tol) {
     if (hi >= kMaxSpans) throw fail();
     hi = std::min(kMaxSpans, std::max(hi + 1, static_cast<int>(std::ceil(hi * 1.1))));
@@ -261,19 +292,28 @@ LimitedCurve fit_by_need(const PolarFunction& R, const ProfileTable& table, cons
     std::sort(order.begin(), order.end());
     if (order.size() > effort.removal_tries) order.resize(effort.removal_tries);
     for (const auto& [error, at] : order) {
+      throw_if_stopped(stop);
       std::vector<double> fewer = best.space.breaks();
       if (static_cast<int>(fewer.size()) - 2 < fewest) break;
       fewer.erase(std::find(fewer.begin(), fewer.end(), at));
-      Fit c = fit_on(std::move(fewer), periodic, table, p, minimax);
+      Fit c = fit_on(std::move(fewer), periodic, table, p, minimax, kShare * tol);
       if (c.max <= kShare * tol) best = std::move(c);
     }
   }
 
-  // 4. Verified against R itself; where it misses, the span of the largest error is split
-  // (greedy insertion) and the minimax fit repeated.
+  // 4. Verified against R itself (or its table); where it misses, the span of the largest error
+  // is split (greedy insertion) and the minimax fit repeated.
+  PolarFunction tabled = R;
+  if (effort.verify_on_table)
+    tabled.derivatives = [&table](double psi, int d, double* out) {
+      double v[2];  // the table's R and R' (measure asks for d <= 1)
+      table.derivatives(psi, v);
+      for (int k = 0; k <= std::min(d, 1); ++k) out[k] = v[k];
+    };
   for (int round = 0;; ++round) {
+    throw_if_stopped(stop);
     double at = 0.0;
-    LimitedCurve out = measure(best.space, R, best.coefs, &at);
+    LimitedCurve out = measure(best.space, tabled, best.coefs, &at);
     if (out.max_radial_error <= tol) return out;
     if (round >= kInsertionRounds || best.space.spans() >= kMaxSpans) throw fail();
     std::vector<double> b = best.space.breaks();
@@ -285,7 +325,7 @@ LimitedCurve fit_by_need(const PolarFunction& R, const ProfileTable& table, cons
     // A miss that splitting cannot reach (a fold the fit keeps) ends before round-off does.
     if (!(b[j + 1] - b[j] > kMinSpan * (R.end - R.start))) throw fail();
     b.insert(b.begin() + static_cast<std::ptrdiff_t>(j) + 1, 0.5 * (b[j] + b[j + 1]));
-    best = fit_on(std::move(b), periodic, table, p, minimax);
+    best = fit_on(std::move(b), periodic, table, p, minimax, kShare * tol);
   }
 }
 
@@ -302,34 +342,48 @@ LimitedCurve approximate_polar_curve(const PolarFunction& R, int degree, double 
                                      const LimitedEffort& effort) {
   check_degree_and_tolerance(degree, tol);
   const ProfileTable table(R, effort.table_intervals);
-  return fit_by_need(R, table, place_knots(R, table, degree, tol, effort), tol, effort);
+  return fit_by_need(R, table, place_knots(R, table, degree, tol, effort, {}), tol, effort, {});
 }
 
 LimitedCurve fewest_control_points(const PolarFunction& R, const std::vector<int>& degrees,
-                                   double tol, const LimitedEffort& effort) {
+                                   double tol, const LimitedEffort& effort, std::stop_token stop) {
   if (degrees.empty()) throw InputError("degree-limited profile: no degree to try");
   for (int degree : degrees) check_degree_and_tolerance(degree, tol);
   const ProfileTable table(R, effort.table_intervals);
-  // Every degree's knots placed (plain fits, cheap), then the minimax fits in the order of the
-  // control points the placements predict, until `finalists` of them have met the tolerance.
+  // Every degree's knots placed (plain fits, cheap), each on its own thread.
+  std::vector<std::future<Placement>> placing;
+  for (int degree : degrees)
+    placing.push_back(std::async(std::launch::async, [&, degree] {
+      return place_knots(R, table, degree, tol, effort, stop);
+    }));
   std::vector<Placement> places;
-  for (int degree : degrees) places.push_back(place_knots(R, table, degree, tol, effort));
+  for (std::future<Placement>& f : placing) places.push_back(f.get());
   std::stable_sort(places.begin(), places.end(), [](const Placement& a, const Placement& b) {
-    return a.predicted_control_points() < b.predicted_control_points() ||
-           (a.predicted_control_points() == b.predicted_control_points() && a.degree < b.degree);
+    return a.predicted_control_points < b.predicted_control_points ||
+           (a.predicted_control_points == b.predicted_control_points && a.degree < b.degree);
   });
+  // Then the minimax fits in the order of the control points the placements predict, as many at
+  // a time (each on its own thread) as are still wanted, until `finalists` have met the tolerance.
   std::optional<LimitedCurve> best;
   std::optional<NumericalError> failure;
-  std::size_t fitted = 0;
-  for (std::size_t k = 0; k < places.size() && fitted < effort.finalists; ++k) try {
-      LimitedCurve c = fit_by_need(R, table, places[k], tol, effort);
-      ++fitted;
-      if (!best || c.control_points < best->control_points ||
-          (c.control_points == best->control_points && c.curve.degree() < best->curve.degree()))
-        best = std::move(c);
-    } catch (const NumericalError& e) {
-      failure = e;
-    }
+  std::size_t fitted = 0, next = 0;
+  while (fitted < effort.finalists && next < places.size()) {
+    std::vector<std::future<LimitedCurve>> fitting;
+    for (std::size_t k = next; k < std::min(places.size(), next + effort.finalists - fitted); ++k)
+      fitting.push_back(std::async(std::launch::async, [&, k] {
+        return fit_by_need(R, table, places[k], tol, effort, stop);
+      }));
+    next += fitting.size();
+    for (std::future<LimitedCurve>& f : fitting) try {
+        LimitedCurve c = f.get();
+        ++fitted;
+        if (!best || c.control_points < best->control_points ||
+            (c.control_points == best->control_points && c.curve.degree() < best->curve.degree()))
+          best = std::move(c);
+      } catch (const NumericalError& e) {
+        failure = e;
+      }
+  }
   if (!best) throw *failure;
   return std::move(*best);
 }

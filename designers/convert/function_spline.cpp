@@ -5,8 +5,8 @@
 #include <numeric>
 #include <string>
 
-#include "designers/convert/golden_section.h"
 #include "designers/convert/knot_placement.h"
+#include "designers/convert/refined_maximum.h"
 #include "src/error.h"
 #include "src/fit/constrained_least_squares.h"
 #include "src/number_text.h"

@@ -5,7 +5,7 @@
 #include <optional>
 
 #include "designers/convert/conversion_error.h"
-#include "designers/convert/golden_section.h"
+#include "designers/convert/refined_maximum.h"
 #include "src/nurbs/knot_removal.h"
 
 namespace polarform {

@@ -34,4 +34,8 @@ struct PolarFunction {
   bool closed() const;
 };
 
+// The polar angle of the point (x, y) that lies nearest to `near` (within π of it): the angle a
+// curve point has when the curve follows the polar angle `near` approximately.
+double polar_angle_near(double x, double y, double near);
+
 }  // namespace polarform

@@ -1,12 +1,11 @@
 #include "designers/convert/profile_fit.h"
 
-#include <Eigen/SparseCholesky>
-#include <Eigen/SparseCore>
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 
+#include "designers/convert/bordered_band_cholesky.h"
+#include "designers/convert/polar_function.h"
 #include "src/error.h"
 
 namespace polarform {
@@ -77,11 +76,10 @@ std::vector<Sample> samples(const SplineSpace& space, const ProfileTable& R, int
   return out;
 }
 
-// Weighted least squares on the samples (normal equations, sparse Cholesky; the unknowns x_j, y_j
+// Weighted least squares on the samples (normal equations, Cholesky; the unknowns x_j, y_j
 // interleaved so that the system is banded apart from the periodic wrap).
 Eigen::MatrixXd solve(const SplineSpace& space, const std::vector<Sample>& ss,
-                      const std::vector<Held>& hold, double slide,
-                      Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>& solver, bool analysed) {
+                      const std::vector<Held>& hold, double slide) {
   const int p = space.degree(), n = space.size();
   std::vector<Eigen::Matrix2d> band(static_cast<std::size_t>(n) * (p + 1), Eigen::Matrix2d::Zero());
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(2 * n);
@@ -136,30 +134,19 @@ Eigen::MatrixXd solve(const SplineSpace& space, const std::vector<Sample>& ss,
     for (int c = 0; c < 2; ++c)
       if (h.held[c]) rhs(2 * h.index + c) = 0.0;
   }
-  std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(band.size() * 8);
+  // The last p control values of a periodic space wrap to its first spans: they form the border.
+  BorderedBandCholesky A(2 * n, 2 * p + 1, space.periodic() ? 2 * p : 0);
   for (int J = 0; J < n; ++J)
     for (int d = 0; d <= p; ++d) {
+      if (J + d >= n && !space.periodic()) break;  // a clamped space's band ends at n
       const Eigen::Matrix2d& M = band[static_cast<std::size_t>(J) * (p + 1) + d];
       const int K = (J + d) % n;
       for (int r = 0; r < 2; ++r)
-        for (int c = 0; c < 2; ++c) {
-          if (d == 0 && c < r) continue;  // the diagonal block's lower half mirrors its upper
-          triplets.emplace_back(2 * J + r, 2 * K + c, M(r, c));
-          triplets.emplace_back(2 * K + c, 2 * J + r, M(r, c));
-        }
+        for (int c = d == 0 ? r : 0; c < 2; ++c)  // a diagonal block's lower half mirrors its upper
+          A.add(2 * J + r, 2 * K + c, M(r, c));
     }
-  // The diagonal blocks' diagonals were added twice.
-  for (int J = 0; J < n; ++J)
-    for (int r = 0; r < 2; ++r)
-      triplets.emplace_back(2 * J + r, 2 * J + r,
-                            -band[static_cast<std::size_t>(J) * (p + 1)](r, r));
-  Eigen::SparseMatrix<double> A(2 * n, 2 * n);
-  A.setFromTriplets(triplets.begin(), triplets.end());
-  if (!analysed) solver.analyzePattern(A);
-  solver.factorize(A);
-  if (solver.info() != Eigen::Success) throw NumericalError("degree-limited fit: singular system");
-  const Eigen::VectorXd y = solver.solve(rhs);
+  if (!A.factorize()) throw NumericalError("degree-limited fit: singular system");
+  const Eigen::VectorXd y = A.solve(rhs);
   Eigen::MatrixXd x = Eigen::Map<const Eigen::MatrixXd>(y.data(), 2, n);
   for (const Held& h : hold) x.col(h.index) = h.value + h.Q * x.col(h.index);
   return x;
@@ -175,12 +162,10 @@ Eigen::Vector2d curve_point(const Sample& s, const Eigen::MatrixXd& coefs, int p
 // radial error): its true radial error f and gradient g there, the target c − f g / |g|², the
 // full-distance share anchored at c. Returns |f|.
 double relinearise(Sample& s, const Eigen::Vector2d& c, const ProfileTable& R) {
-  constexpr double kTwoPi = 2 * std::numbers::pi;
   const double rho = c.norm();
-  const double psi = s.t + std::remainder(std::atan2(c.y(), c.x()) - s.t, kTwoPi);
   double d[2];
-  R.derivatives(psi, d);
-  const Eigen::Vector2d er(std::cos(psi), std::sin(psi)), et(-er.y(), er.x());
+  R.derivatives(polar_angle_near(c.x(), c.y(), s.t), d);
+  const Eigen::Vector2d er = c / rho, et(-er.y(), er.x());  // at c's polar angle
   const double f = rho - d[0];
   s.direction = er - d[1] / rho * et;
   s.point = c - f * s.direction / s.direction.squaredNorm();
@@ -192,23 +177,30 @@ double relinearise(Sample& s, const Eigen::Vector2d& c, const ProfileTable& R) {
 
 // NURBS Book A9.7 (least squares) on radial-error directions (Wang, Pottmann & Liu 2006), then
 // Lawson 1961: w_i ← w_i·|r_i|, the best max residual kept.
-Eigen::MatrixXd fit_profile(const SplineSpace& space, const ProfileTable& R,
-                            const ProfileFitOptions& options) {
+FittedProfile fit_profile(const SplineSpace& space, const ProfileTable& R,
+                          const ProfileFitOptions& options) {
   std::vector<Sample> ss = samples(space, R, options.per_span);
   const std::vector<Held> hold = held(space, R);
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
-  Eigen::MatrixXd coefs = solve(space, ss, hold, options.slide, solver, false), best = coefs;
+  FittedProfile best{solve(space, ss, hold, options.slide), {}};
+  Eigen::MatrixXd coefs = best.coefs;
   const int p = space.degree(), n = space.size();
   double best_max = std::numeric_limits<double>::infinity();
   std::vector<double> r(ss.size(), 0.0);
   for (int step = 0; step <= options.lawson_steps; ++step) {
-    if (step > 0) coefs = solve(space, ss, hold, options.slide, solver, true);
+    if (step > 0) coefs = solve(space, ss, hold, options.slide);
     double worst = 0.0, sum = 0.0;
     for (std::size_t i = 0; i < ss.size(); ++i) {
       r[i] = relinearise(ss[i], curve_point(ss[i], coefs, p, n), R);
       worst = std::max(worst, r[i]);
     }
-    if (worst < best_max) best_max = worst, best = coefs;
+    if (worst < best_max) {
+      best_max = worst, best.coefs = coefs;
+      best.sample_errors.assign(static_cast<std::size_t>(space.spans()), 0.0);
+      for (std::size_t i = 0; i < ss.size(); ++i) {
+        double& e = best.sample_errors[i / static_cast<std::size_t>(options.per_span)];
+        e = std::max(e, r[i]);
+      }
+    }
     if (step == options.lawson_steps || worst == 0.0) break;
     if (!options.reweight) continue;
     for (std::size_t i = 0; i < ss.size(); ++i) sum += ss[i].weight * r[i];
@@ -221,15 +213,13 @@ Eigen::MatrixXd fit_profile(const SplineSpace& space, const ProfileTable& R,
 
 std::vector<double> span_errors(const SplineSpace& space, const Eigen::MatrixXd& coefs,
                                 const ProfileTable& R, int per_span) {
-  constexpr double kTwoPi = 2 * std::numbers::pi;
   const std::vector<double>& b = space.breaks();
   std::vector<double> out(static_cast<std::size_t>(space.spans()), 0.0);
   for (int j = 0; j < space.spans(); ++j)
     for (int k = 0; k <= per_span; ++k) {
       const double t = b[j] + (b[j + 1] - b[j]) * k / per_span;
       const Eigen::Vector2d c = space.point(coefs, t);
-      const double psi = t + std::remainder(std::atan2(c.y(), c.x()) - t, kTwoPi);
-      out[j] = std::max(out[j], std::abs(c.norm() - R(psi)));
+      out[j] = std::max(out[j], std::abs(c.norm() - R(polar_angle_near(c.x(), c.y(), t))));
     }
   return out;
 }

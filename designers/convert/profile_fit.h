@@ -21,9 +21,13 @@ struct ProfileFitOptions {
   bool reweight = true;  // each with Lawson's reweighting
 };
 
-// Distinct control values (2 x space.size()) of the fit.
-Eigen::MatrixXd fit_profile(const SplineSpace& space, const ProfileTable& R,
-                            const ProfileFitOptions& options);
+struct FittedProfile {
+  Eigen::MatrixXd coefs;              // distinct control values, 2 x space.size()
+  std::vector<double> sample_errors;  // per span: the largest radial error at the fit's samples
+};
+
+FittedProfile fit_profile(const SplineSpace& space, const ProfileTable& R,
+                          const ProfileFitOptions& options);
 
 // The radial error |ρ − R(ψ)| of the fit at `per_span` + 1 points of every span, the largest per
 // span (R from the table).

@@ -45,6 +45,7 @@ ProfileTable::ProfileTable(const PolarFunction& R, int intervals)
 }
 
 double ProfileTable::wrap(double psi) const {
+  if (psi >= start_ && psi <= end_) return psi;
   if (closed_) {
     const double period = 2 * std::numbers::pi;
     psi = start_ + std::fmod(psi - start_, period);

@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <stop_token>
 
 #include "designers/cam/contour_polar_function.h"
 #include "src/error.h"
@@ -118,6 +119,30 @@ TEST(DegreeLimited, AJumpOfTheThirdDerivativeIsAKnotAPlainBreakpointNeedNotBe) {
   }
   EXPECT_TRUE(at_pi);
   EXPECT_FALSE(at_one);
+}
+
+TEST(DegreeLimited, FewestControlPointsIsTheBestDegreesFitWhateverTheThreadsDo) {
+  // The degrees are placed and fitted on threads of their own; the result must not depend on
+  // their timing: twice the same curve, no more control points than any single degree's fit at
+  // the same effort, and within tol by dense sampling.
+  const PolarFunction R = contour("roller");
+  const LimitedEffort effort{.table_intervals = 512, .placement_rounds = 6, .finalists = 4};
+  const LimitedCurve a = fewest_control_points(R, {3, 4, 5, 6}, 1e-3, effort);
+  const LimitedCurve b = fewest_control_points(R, {3, 4, 5, 6}, 1e-3, effort);
+  EXPECT_EQ(a.curve.degree(), b.curve.degree());
+  EXPECT_EQ(a.curve.knots(), b.curve.knots());
+  EXPECT_EQ(a.control_points, b.control_points);
+  for (int degree : {3, 4, 5, 6})
+    EXPECT_LE(a.control_points, approximate_polar_curve(R, degree, 1e-3, effort).control_points)
+        << degree;
+  EXPECT_LE(dense_distance(a.curve, R), 1e-3);
+}
+
+TEST(DegreeLimited, FewestControlPointsStopsWhenAsked) {
+  std::stop_source stop;
+  stop.request_stop();
+  EXPECT_THROW(fewest_control_points(contour("roller"), {3, 4}, 1e-3, {}, stop.get_token()),
+               NumericalError);
 }
 
 TEST(DegreeLimited, RejectsBadArguments) {

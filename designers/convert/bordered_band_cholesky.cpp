@@ -1,0 +1,90 @@
+#include "designers/convert/bordered_band_cholesky.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "src/error.h"
+
+namespace polarform {
+
+BorderedBandCholesky::BorderedBandCholesky(int size, int bandwidth, int border)
+    : size_(size), w_(bandwidth), m_(border), n_(size - border) {
+  if (size < 0 || bandwidth < 0 || border < 0 || border > size)
+    throw InputError("bordered band Cholesky: bad shape");
+  band_.assign(static_cast<std::size_t>(n_) * (w_ + 1), 0.0);
+  border_.assign(static_cast<std::size_t>(m_) * size_, 0.0);
+}
+
+void BorderedBandCholesky::add(int i, int j, double value) {
+  if (i < j) std::swap(i, j);
+  if (i >= n_) {
+    border(i - n_, j) += value;
+  } else {
+    if (i - j > w_) throw InputError("bordered band Cholesky: entry outside the band");
+    band(i, j) += value;
+  }
+}
+
+// Golub & Van Loan Alg. 4.3.5 (band Cholesky, row by row), then the border rows against the band
+// and against each other.
+bool BorderedBandCholesky::factorize() {
+  for (int i = 0; i < n_; ++i)
+    for (int j = std::max(0, i - w_); j <= i; ++j) {
+      double s = band(i, j);
+      for (int k = std::max(0, i - w_); k < j; ++k) s -= band(i, k) * band(j, k);
+      if (j < i) {
+        band(i, j) = s / band(j, j);
+      } else {
+        if (!(s > 0)) return false;
+        band(i, i) = std::sqrt(s);
+      }
+    }
+  for (int r = 0; r < m_; ++r) {
+    for (int j = 0; j < n_; ++j) {
+      double s = border(r, j);
+      for (int k = std::max(0, j - w_); k < j; ++k) s -= border(r, k) * band(j, k);
+      border(r, j) = s / band(j, j);
+    }
+    for (int c = 0; c <= r; ++c) {
+      double s = border(r, n_ + c);
+      for (int k = 0; k < n_ + c; ++k) s -= border(r, k) * border(c, k);
+      if (c < r) {
+        border(r, n_ + c) = s / border(c, n_ + c);
+      } else {
+        if (!(s > 0)) return false;
+        border(r, n_ + r) = std::sqrt(s);
+      }
+    }
+  }
+  return true;
+}
+
+Eigen::VectorXd BorderedBandCholesky::solve(const Eigen::VectorXd& b) const {
+  Eigen::VectorXd x = b;
+  // L·y = b.
+  for (int i = 0; i < n_; ++i) {
+    double s = x(i);
+    for (int k = std::max(0, i - w_); k < i; ++k) s -= band(i, k) * x(k);
+    x(i) = s / band(i, i);
+  }
+  for (int r = 0; r < m_; ++r) {
+    double s = x(n_ + r);
+    for (int k = 0; k < n_ + r; ++k) s -= border(r, k) * x(k);
+    x(n_ + r) = s / border(r, n_ + r);
+  }
+  // Lᵀ·x = y: the border's unknowns first.
+  for (int r = m_ - 1; r >= 0; --r) {
+    double s = x(n_ + r);
+    for (int c = r + 1; c < m_; ++c) s -= border(c, n_ + r) * x(n_ + c);
+    x(n_ + r) = s / border(r, n_ + r);
+  }
+  for (int i = n_ - 1; i >= 0; --i) {
+    double s = x(i);
+    for (int k = i + 1; k <= std::min(n_ - 1, i + w_); ++k) s -= band(k, i) * x(k);
+    for (int r = 0; r < m_; ++r) s -= border(r, i) * x(n_ + r);
+    x(i) = s / band(i, i);
+  }
+  return x;
+}
+
+}  // namespace polarform
