@@ -41,9 +41,10 @@ NurbsCurve2d to_nurbs(const SISLCurve& c, const PolarFunction& R) {
   return NurbsCurve2d(p, clamped.knots(), points, {});
 }
 
-// The fit at one eeps, or nothing if s1961 reports an error.
-std::optional<NurbsCurve2d> fit(std::vector<double>& flat, const PolarFunction& R, int degree,
-                                double eeps, const S1961Options& options) {
+// The fit at one eeps to the samples (x0, y0, x1, ...), or nothing if s1961 reports an error.
+std::optional<NurbsCurve2d> fit(const std::vector<double>& samples, const PolarFunction& R,
+                                int degree, double eeps, const S1961Options& options) {
+  std::vector<double> flat = samples;  // s1961 takes a non-const array: each call its own copy
   const int im = static_cast<int>(flat.size() / 2);
   std::vector<double> epar;  // θ, for parametrization 3
   if (options.parametrization == 3)
