@@ -9,7 +9,7 @@ packages=(
   libeigen3-dev libnlopt-cxx-dev libtinyxml2-dev libcli11-dev nlohmann-json3-dev
   libglfw3-dev libimgui-dev libstb-dev libgl-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  libocct-data-exchange-dev libocct-modeling-algorithms-dev python3-ezdxf
+  libocct-data-exchange-dev libocct-modeling-algorithms-dev libsisl-dev python3-ezdxf
   xvfb xauth libgl1-mesa-dri fonts-dejavu-core
 )
 if [ "${1:-}" = "--fuzz" ]; then

@@ -5,28 +5,19 @@
 #include <Standard_Failure.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array1OfPnt.hxx>
-#include <cmath>
 #include <optional>
 
-#include "designers/convert/conversion_error.h"
 #include "src/nurbs/knots.h"
 
 namespace polarform {
 
 namespace {
 
-constexpr int kSamples = 1441;
-constexpr double kTol3dLadder[] = {2.0, 1.4, 1.0, 0.7, 0.5, 0.35, 0.25};
-constexpr int kMeasureSamples = 20000;
-
 TColgp_Array1OfPnt contour_samples(const PolarFunction& R) {
-  TColgp_Array1OfPnt points(1, kSamples);
-  for (int k = 0; k < kSamples; ++k) {
-    const double theta =
-        k == kSamples - 1 ? R.end : R.start + (R.end - R.start) * k / (kSamples - 1);
-    const double r = R(theta);
-    points.SetValue(k + 1, gp_Pnt(r * std::cos(theta), r * std::sin(theta), 0.0));
-  }
+  const std::vector<Eigen::Vector2d> samples = peer_contour_samples(R);
+  TColgp_Array1OfPnt points(1, static_cast<int>(samples.size()));
+  for (std::size_t k = 0; k < samples.size(); ++k)
+    points.SetValue(static_cast<int>(k) + 1, gp_Pnt(samples[k].x(), samples[k].y(), 0.0));
   return points;
 }
 
@@ -65,15 +56,8 @@ std::optional<NurbsCurve2d> fit(const TColgp_Array1OfPnt& points, const PolarFun
 // Peer baseline of issue 14: Open CASCADE GeomAPI_PointsToBSpline (AppDef least squares).
 PeerCurve occt_points_to_bspline(const PolarFunction& R, int deg_min, int deg_max, double tol) {
   const TColgp_Array1OfPnt points = contour_samples(R);
-  for (double factor : kTol3dLadder) {
-    std::optional<NurbsCurve2d> c = fit(points, R, deg_min, deg_max, factor * tol);
-    if (!c) continue;
-    // Measured densely (OCCT places its knots for its samples, not for the error between them):
-    // 20000 points over the curve, at least samples_per_span in each span, maxima refined.
-    const double error = profile_error(*c, R, c->front(), c->back(), kMeasureSamples).max_radial;
-    if (error <= tol) return {true, c->size(), c->degree(), error, factor * tol, std::move(*c)};
-  }
-  return {};
+  return verified_on_ladder(R, tol,
+                            [&](double tol3d) { return fit(points, R, deg_min, deg_max, tol3d); });
 }
 
 }  // namespace polarform

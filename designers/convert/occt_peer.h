@@ -5,8 +5,8 @@
 // rather than `#if`.
 #pragma once
 
+#include "designers/convert/peer_fit.h"
 #include "designers/convert/polar_function.h"
-#include "src/nurbs/nurbs_curve.h"
 
 namespace polarform {
 
@@ -16,21 +16,12 @@ inline constexpr bool kOcctPeersAvailable = true;
 inline constexpr bool kOcctPeersAvailable = false;
 #endif
 
-struct PeerCurve {
-  bool found = false;             // some Tol3D of the ladder gave a curve measured within tol
-  int control_points = 0;         // poles of that curve (0 when not found)
-  int degree = 0;                 // the degree GeomAPI_PointsToBSpline chose
-  double max_radial_error = 0.0;  // mm, measured against R
-  double tol3d = 0.0;             // mm, the Tol3D that gave it
-  NurbsCurve2d curve;             // its parameter mapped linearly onto [R.start, R.end]
-};
-
 // PeerCurve occt_points_to_bspline(R, deg_min, deg_max, tol)
 //
-// Open CASCADE's GeomAPI_PointsToBSpline(samples, deg_min, deg_max, GeomAbs_C2, Tol3D) on 1441
-// samples R(θ)(cos θ, sin θ) equally spaced in θ over [R.start, R.end], for Tol3D = tol·{2, 1.4, 1,
-// 0.7, 0.5, 0.35, 0.25} in turn (OCCT checks Tol3D at the samples only, and a looser Tol3D gives
-// fewer poles); the first curve whose measured max radial error is <= tol is returned.
+// Open CASCADE's GeomAPI_PointsToBSpline(samples, deg_min, deg_max, GeomAbs_C2, Tol3D) on the
+// 1441 samples of peer_contour_samples, for Tol3D = tol·{2, 1.4, 1, 0.7, 0.5, 0.35, 0.25} in turn
+// (OCCT checks Tol3D at the samples only, and a looser Tol3D gives fewer poles); the first curve
+// whose measured max radial error is <= tol is returned (verified_on_ladder, peer_fit.h).
 //
 // Inputs:
 //   R                 the profile (closed or open)
@@ -38,8 +29,9 @@ struct PeerCurve {
 //                     cubic, 3..8 for its best)
 //   tol               the tolerance ε, mm (> 0)
 // Output:
-//   the verified curve with its poles, degree, measured error and Tol3D; found = false when no
-//   Tol3D of the ladder gave one (a fit that fails or throws Standard_Failure is skipped).
+//   the verified curve with its poles, degree, measured error and Tol3D (peer_tolerance); found =
+//   false when no Tol3D of the ladder gave one (a fit that fails or throws Standard_Failure is
+//   skipped).
 PeerCurve occt_points_to_bspline(const PolarFunction& R, int deg_min, int deg_max, double tol);
 
 }  // namespace polarform

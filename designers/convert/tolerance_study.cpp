@@ -8,6 +8,7 @@
 #include "designers/convert/degree_limited.h"
 #include "designers/convert/occt_peer.h"
 #include "designers/convert/polar_conversion.h"
+#include "designers/convert/sisl_peer.h"
 #include "src/base/angle_deviation.h"
 #include "src/error.h"
 #include "src/units.h"
@@ -49,7 +50,8 @@ StudyMethodResult base_method(const PolarFunction& R, double tol, ArcKind kind) 
 StudyPeerRatios peer_ratios(const StudyRow& row) {
   StudyPeerRatios out;
   int best = 0;
-  for (const StudyPeerResult* p : {&row.occt_degree3, &row.occt_best})
+  for (const StudyPeerResult* p :
+       {&row.occt_degree3, &row.occt_best, &row.sisl_degree3, &row.sisl_best})
     if (p->found && (best == 0 || p->control_points < best)) best = p->control_points;
   if (best > 0) {
     out.exact_to_best = double(row.exact.control_points) / best;
@@ -58,6 +60,9 @@ StudyPeerRatios peer_ratios(const StudyRow& row) {
   if (row.occt_degree3.found)
     out.degree3_to_occt_degree3 =
         double(row.degree3.control_points) / row.occt_degree3.control_points;
+  if (row.sisl_degree3.found)
+    out.degree3_to_sisl_degree3 =
+        double(row.degree3.control_points) / row.sisl_degree3.control_points;
   return out;
 }
 
@@ -84,19 +89,32 @@ std::vector<StudyRow> tolerance_study(const PolarFunction& R, const std::vector<
                  exact.max_radial_error};
     const LimitedCurve degree3 = approximate_polar_curve(R, 3, tol);
     row.degree3 = {0, 0, 3, degree3.control_points, degree3.max_radial_error};
-    // Discarded without Open CASCADE, so that occt_points_to_bspline need not exist.
+    const auto result = [](const PeerCurve& c) {
+      return StudyPeerResult{c.found, c.degree, c.control_points, c.max_radial_error,
+                             c.peer_tolerance};
+    };
+    // Discarded without Open CASCADE (SISL), so that occt_points_to_bspline (sisl_s1961) need not
+    // exist.
     if constexpr (kOcctPeersAvailable) {
       if (options.peers) {
-        const auto peer = [&](int deg_min, int deg_max) {
-          const PeerCurve c = occt_points_to_bspline(R, deg_min, deg_max, tol);
-          return StudyPeerResult{c.found, c.degree, c.control_points, c.max_radial_error, c.tol3d};
-        };
         row.peers = true;
-        row.occt_degree3 = peer(3, 3);
-        row.occt_best = peer(3, 8);
-        row.ratios = peer_ratios(row);
+        row.occt_degree3 = result(occt_points_to_bspline(R, 3, 3, tol));
+        row.occt_best = result(occt_points_to_bspline(R, 3, 8, tol));
       }
     }
+    if constexpr (kSislPeersAvailable) {
+      if (options.peers) {
+        row.peers = true;
+        const PeerCurve degree3 = sisl_s1961(R, 3, tol);
+        const PeerCurve higher = sisl_s1961_best(R, 4, 8, tol);  // degree 3 is fitted above
+        row.sisl_degree3 = result(degree3);
+        row.sisl_best = result(
+            higher.found && (!degree3.found || higher.control_points < degree3.control_points)
+                ? higher
+                : degree3);
+      }
+    }
+    if (row.peers) row.ratios = peer_ratios(row);
     rows.push_back(row);
     if (progress) progress(static_cast<double>(k + 1) / tolerances.size());
   }

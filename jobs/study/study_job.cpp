@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "designers/convert/occt_peer.h"
+#include "designers/convert/sisl_peer.h"
 #include "export/atomic_file.h"
 #include "export/csv_writer.h"
 #include "export/svg_plot.h"
@@ -46,9 +47,13 @@ std::vector<std::string> study_columns(bool peers) {
     for (const char* column :
          {" control points", " degree", " max radial error [mm]", " tol3d [mm]"})
       out.push_back(std::string(peer) + column);
+  for (const char* peer : {"sisl degree 3", "sisl degree 3..8"})
+    for (const char* column :
+         {" control points", " degree", " max radial error [mm]", " eeps [mm]"})
+      out.push_back(std::string(peer) + column);
   for (const char* ratio :
        {"exact / best peer control points", "degree 3 / best peer control points",
-        "degree 3 / occt degree 3 control points"})
+        "degree 3 / occt degree 3 control points", "degree 3 / sisl degree 3 control points"})
     out.push_back(ratio);
   return out;
 }
@@ -75,11 +80,13 @@ std::vector<double> study_values(const StudyRow& row, bool peers) {
                              row.degree3.max_radial_error};
   if (!peers) return out;
   constexpr double kNone = StudyPeerRatios::kNone;
-  for (const StudyPeerResult* p : {&row.occt_degree3, &row.occt_best})
-    for (double v : {double(p->control_points), double(p->degree), p->max_radial_error, p->tol3d})
+  for (const StudyPeerResult* p :
+       {&row.occt_degree3, &row.occt_best, &row.sisl_degree3, &row.sisl_best})
+    for (double v :
+         {double(p->control_points), double(p->degree), p->max_radial_error, p->peer_tolerance})
       out.push_back(p->found ? v : kNone);
-  for (double v :
-       {row.ratios.exact_to_best, row.ratios.degree3_to_best, row.ratios.degree3_to_occt_degree3})
+  for (double v : {row.ratios.exact_to_best, row.ratios.degree3_to_best,
+                   row.ratios.degree3_to_occt_degree3, row.ratios.degree3_to_sisl_degree3})
     out.push_back(v);
   return out;
 }
@@ -98,26 +105,31 @@ nlohmann::ordered_json report_row(const StudyRow& row, bool peers) {
       {"rqb", method(row.rqb)},          {"cubic_through_points", method(row.cubic)},
       {"exact_form", method(row.exact)}, {"degree_3", method(row.degree3)}};
   if (!peers) return out;
-  const auto peer = [](const StudyPeerResult& p) {
+  // tolerance_key: the name of the tolerance the peer was handed (OCCT's Tol3D, SISL's eeps).
+  const auto peer = [](const StudyPeerResult& p, const char* tolerance_key) {
     if (!p.found) return nlohmann::ordered_json{{"found", false}};
     return nlohmann::ordered_json{{"found", true},
                                   {"degree", p.degree},
                                   {"control_points", p.control_points},
                                   {"max_radial_error_mm", p.max_radial_error},
-                                  {"tol3d_mm", p.tol3d}};
+                                  {tolerance_key, p.peer_tolerance}};
   };
-  out["occt_degree_3"] = peer(row.occt_degree3);
-  out["occt_degree_3_to_8"] = peer(row.occt_best);
+  out["occt_degree_3"] = peer(row.occt_degree3, "tol3d_mm");
+  out["occt_degree_3_to_8"] = peer(row.occt_best, "tol3d_mm");
+  out["sisl_degree_3"] = peer(row.sisl_degree3, "eeps_mm");
+  out["sisl_degree_3_to_8"] = peer(row.sisl_best, "eeps_mm");
   out["control_point_ratios"] = {{"exact_to_best_peer", row.ratios.exact_to_best},
                                  {"degree_3_to_best_peer", row.ratios.degree3_to_best},
-                                 {"degree_3_to_occt_degree_3", row.ratios.degree3_to_occt_degree3}};
+                                 {"degree_3_to_occt_degree_3", row.ratios.degree3_to_occt_degree3},
+                                 {"degree_3_to_sisl_degree_3", row.ratios.degree3_to_sisl_degree3}};
   return out;
 }
 
 }  // namespace
 
 std::string missing_peers_note(const StudyOptions& options) {
-  return options.peers ? "peers: Open CASCADE is not available in this build, no peer columns"
+  return options.peers ? "peers: neither Open CASCADE nor SISL is available in this build, no peer "
+                         "columns"
                        : "peers: not asked for (--no-peers), no peer columns";
 }
 
@@ -131,7 +143,7 @@ StudyJobResult run_study_job(const CamProject& project, const std::vector<double
                        format_round_trip(kMinTolerance) + " mm");
   StudyJobResult r;
   r.rows = tolerance_study(cam_profile_function(project.cam), tolerances, progress, options);
-  r.peers = options.peers && kOcctPeersAvailable;
+  r.peers = options.peers && (kOcctPeersAvailable || kSislPeersAvailable);
   r.deviation = angle_deviation_study(40);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;

@@ -1,7 +1,7 @@
 // The study job behind `polarform study`: a tolerance sweep over a cam project's profile (quartic
 // base, RQB base, cubic-through-points baseline, the compacted exact form and the degree-3 profile
-// beside Open CASCADE's fits as the peer) and the angle-deviation relation of the base arcs,
-// written as study.csv, study.svg, deviation.csv, deviation.svg and report.json.
+// beside the peers' fits, Open CASCADE's and SISL's) and the angle-deviation relation of the base
+// arcs, written as study.csv, study.svg, deviation.csv, deviation.svg and report.json.
 #pragma once
 
 #include <filesystem>
@@ -17,7 +17,8 @@ namespace polarform {
 struct StudyJobResult {
   std::vector<StudyRow> rows;
   std::vector<DeviationRow> deviation;
-  bool peers = false;  // the rows carry the peer fits (asked for, and Open CASCADE available)
+  bool peers =
+      false;  // the rows carry the peer fits (asked for, and Open CASCADE or SISL available)
   double seconds = 0.0;
 };
 

@@ -29,7 +29,8 @@ Figure study_figure(const StudyJobResult& r, const std::string& name) {
   const auto peer_points = [](const StudyPeerResult& p) {
     return p.found ? double(p.control_points) : StudyPeerRatios::kNone;
   };
-  std::vector<double> tol, q, rqb, cubic, exact, degree3, occt3, occt_best, qa, ra;
+  std::vector<double> tol, q, rqb, cubic, exact, degree3, occt3, occt_best, sisl3, sisl_best, qa,
+      ra;
   std::vector<double> exact_ratio, degree3_ratio;
   for (const StudyRow& row : rows) {
     tol.push_back(row.tolerance);
@@ -40,6 +41,8 @@ Figure study_figure(const StudyJobResult& r, const std::string& name) {
     degree3.push_back(row.degree3.control_points);
     occt3.push_back(peer_points(row.occt_degree3));
     occt_best.push_back(peer_points(row.occt_best));
+    sisl3.push_back(peer_points(row.sisl_degree3));
+    sisl_best.push_back(peer_points(row.sisl_best));
     exact_ratio.push_back(row.ratios.exact_to_best);
     degree3_ratio.push_back(row.ratios.degree3_to_best);
     qa.push_back(row.quartic.arcs);
@@ -62,6 +65,8 @@ Figure study_figure(const StudyJobResult& r, const std::string& name) {
   if (r.peers) {
     points.add(line("OCCT PointsToBSpline, degree 3", tol, occt3, "#d55e00"));
     points.add(line("OCCT PointsToBSpline, degrees 3..8", tol, occt_best, "#000000"));
+    points.add(line("SISL s1961, degree 3", tol, sisl3, "#56b4e9"));
+    points.add(line("SISL s1961, best of degrees 3..8", tol, sisl_best, "#f0e442"));
   }
   Plot& arcs = f.add_panel();
   arcs.log_y = true;
@@ -70,7 +75,7 @@ Figure study_figure(const StudyJobResult& r, const std::string& name) {
   arcs.add(line("RQB", tol, ra, "#e69f00"));
   if (ratio_panel) {
     Plot& ratios = f.add_panel();
-    ratios.y_label = "control points / best OCCT fit";
+    ratios.y_label = "control points / best peer fit";
     ratios.add(line("exact form, compacted", tol, exact_ratio, "#009e73"));
     ratios.add(line("degree 3, knots by need", tol, degree3_ratio, "#cc79a7"));
   }

@@ -1,6 +1,6 @@
 // The study's peer columns (issue 14): one row of the study job on examples/cams/roller.xml at
-// 1 µm with Open CASCADE's two fits (degree 3, degrees 3..8) and without them, so that the peers'
-// cost shows as the difference.
+// 1 µm with the peers' fits (Open CASCADE's degree 3 and degrees 3..8, SISL's degree 3 and best of
+// degrees 3..8) and without them, so that the peers' cost shows as the difference.
 #include <benchmark/benchmark.h>
 
 #include <string>
@@ -26,6 +26,8 @@ void BM_StudyPeerColumns(benchmark::State& state, bool peers) {
   if (row.peers) {
     state.counters["occt3"] = row.occt_degree3.control_points;
     state.counters["occt3_8"] = row.occt_best.control_points;
+    state.counters["sisl3"] = row.sisl_degree3.control_points;
+    state.counters["sisl3_8"] = row.sisl_best.control_points;
   }
 }
 BENCHMARK_CAPTURE(BM_StudyPeerColumns, with_peers, true)

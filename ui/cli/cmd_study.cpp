@@ -1,6 +1,6 @@
 // `polarform study`: sweep the conversion tolerance for a cam design and compare the quasi-uniform
 // quartic base, the RQB base, a cubic spline through sampled points, and polarform's compact
-// profiles (exact form, degree 3) against Open CASCADE's fits as the peer.
+// profiles (exact form, degree 3) against the peers' fits, Open CASCADE's and SISL's.
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -56,12 +56,14 @@ std::string ratio_text(double ratio) {
   return std::isfinite(ratio) ? text : "-";
 }
 
-// Arcs (or points) / control points per method, then (with peers) control points against OCCT's.
+// Arcs (or points) / control points per method, then (with peers) control points against OCCT's
+// and SISL's, and the ratios to the best peer fit.
 void print_table(const StudyJobResult& r) {
   std::printf("%12s  %18s  %18s  %18s  %13s  %5s", "tolerance mm", "quartic arcs/ctrl",
               "rqb arcs/ctrl", "cubic points/ctrl", "exact arcs/ctrl", "deg 3");
   if (r.peers)
-    std::printf("  %6s  %9s  %11s  %11s", "occt 3", "occt 3..8", "exact/best", "deg 3/best");
+    std::printf("  %6s  %9s  %6s  %9s  %11s  %11s", "occt 3", "occt 3..8", "sisl 3", "sisl 3..8",
+                "exact/best", "deg 3/best");
   std::printf("\n");
   for (const StudyRow& row : r.rows) {
     std::printf("%12.3g  %8d/%-9d  %8d/%-9d  %8d/%-9d  %6d/%-6d  %5d", row.tolerance,
@@ -69,8 +71,9 @@ void print_table(const StudyJobResult& r) {
                 row.cubic.points, row.cubic.control_points, row.exact.arcs,
                 row.exact.control_points, row.degree3.control_points);
     if (r.peers)
-      std::printf("  %6s  %9s  %11s  %11s", peer_count(row.occt_degree3).c_str(),
-                  peer_count(row.occt_best).c_str(), ratio_text(row.ratios.exact_to_best).c_str(),
+      std::printf("  %6s  %9s  %6s  %9s  %11s  %11s", peer_count(row.occt_degree3).c_str(),
+                  peer_count(row.occt_best).c_str(), peer_count(row.sisl_degree3).c_str(),
+                  peer_count(row.sisl_best).c_str(), ratio_text(row.ratios.exact_to_best).c_str(),
                   ratio_text(row.ratios.degree3_to_best).c_str());
     std::printf("\n");
   }
@@ -104,9 +107,10 @@ void add_study_command(CLI::App& app) {
       "study",
       "Sweep the conversion tolerance of a cam design (log steps) and compare the quasi-uniform\n"
       "quartic base, the RQB base, a cubic spline through sampled points, the compacted exact\n"
-      "form and the degree-3 profile, and these against Open CASCADE's GeomAPI_PointsToBSpline\n"
-      "(degree 3 and 3..8) as the peer. Writes study.csv, study.svg, deviation.csv,\n"
-      "deviation.svg (max angle deviation vs arc angle) and report.json.");
+      "form and the degree-3 profile, and these against the peers: Open CASCADE's\n"
+      "GeomAPI_PointsToBSpline (degree 3 and 3..8) and SISL's s1961 (degree 3 and the best of\n"
+      "3..8). Writes study.csv, study.svg, deviation.csv, deviation.svg (max angle deviation vs\n"
+      "arc angle) and report.json.");
   cmd->add_option("design", args->design, "cam project file (XML)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--out", args->out, "output directory (created if missing)")->required();
   cmd->add_option("--tol", args->range, "tolerance range LOOSEST:TIGHTEST in mm")
@@ -115,7 +119,7 @@ void add_study_command(CLI::App& app) {
       ->check(CLI::Range(1, 20))
       ->capture_default_str();
   cmd->add_flag("--no-peers", args->no_peers,
-                "leave out the Open CASCADE peer fits (1-2 s per tolerance and fit)");
+                "leave out the peer fits, Open CASCADE's (1-2 s per tolerance and fit) and SISL's");
   cmd->add_flag("--quiet,-q", args->quiet, "print nothing but warnings and errors");
   cmd->add_flag("--lenient", args->lenient, kLenientHelp);
   cmd->callback([args] { run(*args); });

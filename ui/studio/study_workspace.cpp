@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 #include "designers/convert/occt_peer.h"
+#include "designers/convert/sisl_peer.h"
 #include "jobs/study/study_plots.h"
 #include "src/number_text.h"
 #include "ui/studio/colors.h"
@@ -84,14 +86,16 @@ void StudyWorkspace::draw_controls() {
   log_slider("tightest [mm]", settings_.tightest, 1e-8, 1e-2, "%.2g");
   input_int("steps per decade", settings_.per_decade, 1, 10);
   ImGui::PopItemWidth();
-  ImGui::BeginDisabled(!kOcctPeersAvailable);
-  ImGui::Checkbox("Open CASCADE peers", &settings_.peers);
+  constexpr bool kAnyPeer = kOcctPeersAvailable || kSislPeersAvailable;
+  ImGui::BeginDisabled(!kAnyPeer);
+  ImGui::Checkbox("Peers (OCCT, SISL)", &settings_.peers);
   ImGui::EndDisabled();
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-    ImGui::SetTooltip(kOcctPeersAvailable
-                          ? "GeomAPI_PointsToBSpline (degree 3 and 3..8) fitted to 1441 contour "
-                            "samples, measured like ours; 1-2 s per tolerance and fit"
-                          : "Open CASCADE is not available in this build");
+    ImGui::SetTooltip(kAnyPeer ? "Open CASCADE's GeomAPI_PointsToBSpline (degree 3 and 3..8) and "
+                                 "SISL's s1961 (degree 3 and the best of 3..8) fitted to dense "
+                                 "contour samples, measured like ours; OCCT takes 1-2 s per "
+                                 "tolerance and fit"
+                               : "neither Open CASCADE nor SISL is available in this build");
   if (settings_.tightest >= settings_.loosest) {
     ImGui::PushStyleColor(ImGuiCol_Text, color::error);
     ImGui::TextWrapped("The tightest tolerance must be below the loosest.");
@@ -143,10 +147,10 @@ void StudyWorkspace::draw_table() {
 
 void StudyWorkspace::draw_peer_table() {
   if (!result_) return;
-  section("Control points against the peer");
+  section("Control points against the peers");
   if (!result_->peers)
     ImGui::TextDisabled("%s", missing_peers_note(StudyOptions{settings_.peers}).c_str());
-  const int columns = result_->peers ? 7 : 3;
+  const int columns = result_->peers ? 9 : 3;
   const ImGuiTableFlags flags =
       ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp;
   if (!ImGui::BeginTable("study peers", columns, flags)) return;
@@ -156,6 +160,8 @@ void StudyWorkspace::draw_peer_table() {
   if (result_->peers) {
     ImGui::TableSetupColumn("OCCT 3");
     ImGui::TableSetupColumn("OCCT 3..8");
+    ImGui::TableSetupColumn("SISL 3");
+    ImGui::TableSetupColumn("SISL 3..8");
     ImGui::TableSetupColumn("exact/best");
     ImGui::TableSetupColumn("deg 3/best");
   }
@@ -171,7 +177,11 @@ void StudyWorkspace::draw_peer_table() {
                           m->max_radial_error);
     }
     if (!result_->peers) continue;
-    for (const StudyPeerResult* p : {&row.occt_degree3, &row.occt_best}) {
+    const std::pair<const StudyPeerResult*, const char*> peers[] = {{&row.occt_degree3, "Tol3D"},
+                                                                    {&row.occt_best, "Tol3D"},
+                                                                    {&row.sisl_degree3, "eeps"},
+                                                                    {&row.sisl_best, "eeps"}};
+    for (const auto& [p, tolerance_name] : peers) {
       ImGui::TableNextColumn();
       if (!p->found) {
         ImGui::TextDisabled("-");
@@ -179,8 +189,8 @@ void StudyWorkspace::draw_peer_table() {
       }
       ImGui::Text("%d", p->control_points);
       if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("degree %d, measured max radial error %.3g mm, Tol3D %.3g mm", p->degree,
-                          p->max_radial_error, p->tol3d);
+        ImGui::SetTooltip("degree %d, measured max radial error %.3g mm, %s %.3g mm", p->degree,
+                          p->max_radial_error, tolerance_name, p->peer_tolerance);
     }
     for (double ratio : {row.ratios.exact_to_best, row.ratios.degree3_to_best}) {
       ImGui::TableNextColumn();
@@ -191,7 +201,8 @@ void StudyWorkspace::draw_peer_table() {
     }
   }
   ImGui::EndTable();
-  ImGui::TextDisabled("exact: the compacted exact form; best: the fewest of the OCCT fits");
+  ImGui::TextDisabled(
+      "exact: the compacted exact form; best: the fewest of the OCCT and SISL fits");
 }
 
 void StudyWorkspace::draw_plots(ImVec2 size) {
@@ -240,6 +251,8 @@ std::string StudyWorkspace::numbers() const {
   if (!result_->peers) return out.str();
   out << "tightest_occt_degree3_control_points=" << tightest.occt_degree3.control_points << "\n";
   out << "tightest_occt_best_control_points=" << tightest.occt_best.control_points << "\n";
+  out << "tightest_sisl_degree3_control_points=" << tightest.sisl_degree3.control_points << "\n";
+  out << "tightest_sisl_best_control_points=" << tightest.sisl_best.control_points << "\n";
   out << "tightest_exact_to_best_peer=" << tightest.ratios.exact_to_best << "\n";
   return out.str();
 }

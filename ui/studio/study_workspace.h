@@ -20,7 +20,7 @@ namespace polarform::studio {
 struct StudySettings {
   double loosest = 1e-2, tightest = 1e-6;  // mm
   int per_decade = 2;
-  bool peers = true;  // Open CASCADE's fits beside ours, where it is available
+  bool peers = true;  // the peers' fits (Open CASCADE's, SISL's) beside ours, where available
   bool operator==(const StudySettings&) const = default;
 };
 

@@ -63,8 +63,8 @@ TEST(OcctPeer, FitsAClosedContourWithinTheTolerance) {
         EXPECT_LE(sampled_radial_error(p.curve, R), tol);
         const std::vector<double> ladder = {2.0, 1.4, 1.0, 0.7, 0.5, 0.35, 0.25};
         EXPECT_TRUE(std::any_of(ladder.begin(), ladder.end(), [&](double f) {
-          return p.tol3d == f * tol;
-        })) << p.tol3d;
+          return p.peer_tolerance == f * tol;
+        })) << p.peer_tolerance;
         EXPECT_NEAR(p.curve.front(), R.start, 1e-12);
         EXPECT_NEAR(p.curve.back(), R.end, 1e-12);
         EXPECT_LE((p.curve(p.curve.front()) - p.curve(p.curve.back())).norm(), tol);

@@ -1,15 +1,18 @@
-// Control points against the peer (issue 14): for every plate cam of examples/cams and every
+// Control points against the peers (issue 14): for every plate cam of examples/cams and every
 // synthesised head of examples/vessels, and five cams and three heads that are not examples
 // (other laws, followers and head shapes: other_cams, other_heads), at ε = 1e-2, 1e-3, 1e-4 mm, the
-// exact-form profile, the degree-3 profile (knots by need, degree_limited.h) and Open CASCADE's
-// GeomAPI_PointsToBSpline (degree 3, and degrees 3..8) fitted to dense contour samples, every curve
-// measured by the tests' own dense distance to the exact contour (ours must meet ε).
-// Always on: the degree-3 profile has no more control points than OCCT's degree-3 result, and the
-// exact form (the product C = F·B refitted, compaction="refit") no more than OCCT's best (degree 3
-// or 3..8), as recorded below (Open CASCADE's fits take about a second each, too slow for every
+// exact-form profile, the degree-3 profile (knots by need, degree_limited.h), Open CASCADE's
+// GeomAPI_PointsToBSpline (degree 3, and degrees 3..8) and SISL's s1961 (degree 3, and the best of
+// degrees 3..8) fitted to dense contour samples, every curve measured by the tests' own dense
+// distance to the exact contour (ours must meet ε).
+// Always on: the degree-3 profile has no more control points than the best cubic peer (OCCT's or
+// SISL's degree-3 result), and the exact form (the product C = F·B refitted, compaction="refit") no
+// more than the best peer fit (OCCT's or SISL's, any degree), as recorded below, but for the known
+// misses listed with their bounds (Open CASCADE's fits take about a second each, too slow for every
 // run).
-// On request (POLARFORM_PEER_TABLE=1, a few minutes): the same against OCCT fitted live, the
-// table printed and recorded; the peer's time is in parentheses with its measured distance.
+// On request (POLARFORM_PEER_TABLE=1, 10 minutes on a busy 2-core machine): the same against both
+// peers fitted live, the table printed and recorded; a peer's time is in parentheses with its
+// measured distance. POLARFORM_PEER_TABLE=sisl fits SISL only (6.5 minutes there).
 // Degree 3, ours / OCCT deg 3 at ε = 1e-2, 1e-3, 1e-4 (before: uniform knots in ψ; after: knots by
 // need, sliding minimax fit):
 //                                             before                     after
@@ -53,6 +56,7 @@
 #include "designers/convert/degree_limited.h"
 #include "designers/convert/occt_peer.h"
 #include "designers/convert/polar_conversion.h"
+#include "designers/convert/sisl_peer.h"
 #include "jobs/cam/cam_job.h"
 #include "jobs/project/vessel_project.h"
 #include "jobs/vessel/vessel_job.h"
@@ -185,11 +189,13 @@ double distance(const NurbsCurve2d& c, const PolarFunction& R) {
 // Open CASCADE's control points on the same contours at ε = 1e-2, 1e-3, 1e-4 mm, as
 // EveryExampleAtThreeTolerances measures them (OCCT 7.6, GeomAPI_PointsToBSpline on 1441 samples,
 // the smallest verified curve over its Tol3D ladder, occt_peer.h): degree 3, and the best of
-// degree 3 and degrees 3..8.
-struct OcctCounts {
+// degree 3 and degrees 3..8. Fitted live again when kSisl was recorded, OCCT gave these counts or
+// more (9 contours more, mostly at 10 µm: torispherical_100_6 73 / 73 against 64 / 57,
+// ellipsoidal_2_1's best 21 against 13); the recorded counts are kept as the stricter bound.
+struct PeerCounts {
   std::array<int, 3> degree3, best;
 };
-const std::map<std::string, OcctCounts> kOcct = {
+const std::map<std::string, PeerCounts> kOcct = {
     {"roller", {{31, 51, 87}, {27, 51, 63}}},
     {"flat_faced", {{33, 69, 126}, {23, 69, 126}}},
     {"offset_roller", {{33, 106, 310}, {33, 106, 310}}},
@@ -214,32 +220,88 @@ const std::map<std::string, OcctCounts> kOcct = {
     {"ellipsoidal_1.5_1_degree_4", {{20, 41, 67}, {15, 33, 53}}},
 };
 
+// SISL's control points on the same contours at ε = 1e-2, 1e-3, 1e-4 mm, as
+// EveryExampleAtThreeTolerances measures them (SISL 4.6.0, s1961 on 1441 samples or more,
+// sisl_peer.h, the smallest verified curve over its eeps ladder): degree 3, and the best of degrees
+// 3..8; 0 where no fit verified.
+const std::map<std::string, PeerCounts> kSisl = {
+    {"roller", {{32, 44, 87}, {26, 37, 54}}},
+    {"flat_faced", {{28, 48, 86}, {26, 39, 55}}},
+    {"offset_roller", {{30, 55, 95}, {30, 49, 74}}},
+    {"polynomial", {{26, 47, 95}, {24, 43, 53}}},
+    {"scca_dynamics", {{31, 48, 86}, {30, 43, 56}}},
+    {"oscillating_roller", {{34, 52, 100}, {30, 45, 57}}},
+    {"oscillating_flat_faced", {{37, 55, 102}, {29, 42, 64}}},
+    {"grooved", {{27, 38, 89}, {24, 38, 45}}},
+    {"conjugate", {{27, 38, 89}, {24, 38, 45}}},
+    {"custom_curvature", {{22, 38, 65}, {20, 25, 34}}},
+    {"ellipsoidal_2_1", {{26, 50, 76}, {17, 27, 38}}},
+    {"torispherical_100_6", {{34, 59, 99}, {31, 39, 63}}},
+    {"minimum_stress_2_1_depth", {{31, 43, 81}, {21, 31, 45}}},
+    {"hemispherical", {{13, 20, 33}, {8, 9, 10}}},
+    {"harmonic_modified_sine_roller", {{34, 50, 79}, {25, 40, 48}}},
+    {"modified_trapezoid_345_flat", {{26, 47, 93}, {26, 40, 59}}},
+    {"constant_acceleration_cubic_offset_roller", {{27, 59, 96}, {27, 53, 55}}},
+    {"cycloidal_harmonic_flat", {{31, 49, 93}, {29, 32, 43}}},
+    {"345_no_dwell_roller", {{19, 37, 55}, {18, 23, 32}}},
+    {"ellipsoidal_3_1", {{37, 56, 105}, {20, 30, 47}}},
+    {"torispherical_80_10", {{34, 62, 112}, {28, 51, 77}}},
+    {"ellipsoidal_1.5_1_degree_4", {{26, 41, 69}, {15, 27, 44}}},
+};
+
+// The fewest control points among a row's recorded peer fits (0 where none verified).
+int fewest(std::initializer_list<int> counts) {
+  int best = 0;
+  for (int c : counts)
+    if (c > 0 && (best == 0 || c < best)) best = c;
+  return best;
+}
+
+int best_peer(const std::string& name, int i) {
+  return fewest({kOcct.at(name).degree3[i], kOcct.at(name).best[i], kSisl.at(name).degree3[i],
+                 kSisl.at(name).best[i]});
+}
+
+int best_cubic_peer(const std::string& name, int i) {
+  return fewest({kOcct.at(name).degree3[i], kSisl.at(name).degree3[i]});
+}
+
 // The exact form (the product refitted, as plate cams and vessel heads export it): no more control
-// points than Open CASCADE's best, but for known misses, each held to its count:
-// - the 3-4-5 rise-return without dwells at 1 µm, 16 against OCCT's 15 (degree 8, 7 spans; a
-//   periodic spline of degree p needs p + 1 spans);
+// points than the best peer fit, but for known misses, each held to its count:
+// - the 3-4-5 rise-return without dwells at 1 µm, 17 against OCCT's 15 (degree 8, 7 spans; a
+//   periodic spline of degree p needs p + 1 spans; 16 before the refit's placement used the
+//   errors at its samples, a change that saved 10 % over all rows);
 // - near-circular heads at the loose tolerances: a meridian is refitted half by half, each half
 //   with its end points and end tangents (tangent to the shell at the junctions, level on the axis
 //   at the apex), and joined at the apex, where OCCT's single unconstrained fit of the whole
 //   meridian needs no joint — the hemisphere 9 against 7 at 10 and 1 µm (two quartic Béziers
-//   against one of degree 6), the 2:1 ellipsoid 15 against 13 and the 3:1 ellipsoid 21 against 15
-//   at 10 µm.
-int exact_form_bound(const std::string& name, int i, int occt_best) {
+//   against one of degree 6), the 2:1 ellipsoid 15 against 13 and the 3:1 ellipsoid 17 against 15
+//   at 10 µm; and the hemisphere 13 against SISL's best 10 at 0.1 µm, where s1961's single fit of
+//   the whole meridian is again free of the apex joint.
+int exact_form_bound(const std::string& name, int i, int best) {
   static const std::map<std::pair<std::string, int>, int> known_misses = {
-      {{"345_no_dwell_roller", 1}, 16},
-      {{"hemispherical", 0}, 9},
-      {{"hemispherical", 1}, 9},
-      {{"ellipsoidal_2_1", 0}, 15},
-      {{"ellipsoidal_3_1", 0}, 21}};
+      {{"345_no_dwell_roller", 1}, 17}, {{"hemispherical", 0}, 9},  {{"hemispherical", 1}, 9},
+      {{"ellipsoidal_2_1", 0}, 15},     {{"hemispherical", 2}, 13}, {{"ellipsoidal_3_1", 0}, 17}};
   const auto miss = known_misses.find({name, i});
-  return miss == known_misses.end() ? occt_best : miss->second;
+  return miss == known_misses.end() ? best : miss->second;
 }
 
-TEST(PeerCounts, ExactFormNoMoreControlPointsThanOcctsBest) {
+// The degree-3 profile: no more control points than the best cubic peer, but for known misses,
+// each held to its count (none on these contours: at 10 µm SISL's degree-3 fits take 13-37
+// control points and OCCT's 13-84, ours 10-23).
+int degree3_bound(const std::string& name, int i, int best) {
+  static const std::map<std::pair<std::string, int>, int> known_misses = {};
+  const auto miss = known_misses.find({name, i});
+  return miss == known_misses.end() ? best : miss->second;
+}
+
+TEST(PeerCounts, ExactFormNoMoreControlPointsThanTheBestPeer) {
   std::string table =
-      "| example | ε mm | exact form | steps | OCCT best |\n|---|---|---|---|---|\n";
+      "| example | ε mm | exact form | steps | OCCT best | SISL best "
+      "|\n|---|---|---|---|---|---|\n";
   for (const Contour& c : contours()) {
     ASSERT_TRUE(kOcct.count(c.name)) << c.name;
+    ASSERT_TRUE(kSisl.count(c.name)) << c.name;
     for (int i = 0; i < 3; ++i) {
       const double eps = std::pow(10.0, -2 - i);
       SCOPED_TRACE(c.name + " at " + std::to_string(eps));
@@ -250,12 +312,12 @@ TEST(PeerCounts, ExactFormNoMoreControlPointsThanOcctsBest) {
       EXPECT_LE(distance(exact.curve, c.R), eps);
       ASSERT_EQ(exact.steps.size(), 2u);
       EXPECT_EQ(exact.steps[1].name, "refit");
-      EXPECT_LE(exact.curve.size(), exact_form_bound(c.name, i, kOcct.at(c.name).best[i]));
+      EXPECT_LE(exact.curve.size(), exact_form_bound(c.name, i, best_peer(c.name, i)));
       char row[256];
-      std::snprintf(row, sizeof row, "| %s | %g | %d (degree %d) | %d → %d | %d |\n",
+      std::snprintf(row, sizeof row, "| %s | %g | %d (degree %d) | %d → %d | %d | %d |\n",
                     c.name.c_str(), eps, exact.curve.size(), exact.curve.degree(),
                     exact.steps[0].control_points, exact.steps[1].control_points,
-                    kOcct.at(c.name).best[i]);
+                    kOcct.at(c.name).best[i], kSisl.at(c.name).best[i]);
       table += row;
     }
   }
@@ -264,13 +326,14 @@ TEST(PeerCounts, ExactFormNoMoreControlPointsThanOcctsBest) {
 }
 
 // Always on: the degree-3 profile of every example at the three tolerances has no more control
-// points than Open CASCADE's recorded degree-3 result, and meets ε by the tests' own dense
-// measurement.
-TEST(PeerCounts, DegreeThreeNoMoreControlPointsThanOcct) {
-  std::string table = "| example | ε mm | degree 3 | OCCT deg 3 | ms |\n|---|---|---|---|---|\n";
+// points than the best cubic peer's recorded result (OCCT's or SISL's), and meets ε by the tests'
+// own dense measurement.
+TEST(PeerCounts, DegreeThreeNoMoreControlPointsThanTheBestCubicPeer) {
+  std::string table =
+      "| example | ε mm | degree 3 | OCCT deg 3 | SISL deg 3 | ms |\n|---|---|---|---|---|---|\n";
   for (const Contour& c : contours()) {
     ASSERT_TRUE(kOcct.count(c.name)) << c.name;
-    const std::array<int, 3>& occt = kOcct.at(c.name).degree3;
+    ASSERT_TRUE(kSisl.count(c.name)) << c.name;
     for (int i = 0; i < 3; ++i) {
       const double eps = std::pow(10.0, -2 - i);
       SCOPED_TRACE(c.name + " at " + std::to_string(eps));
@@ -281,10 +344,11 @@ TEST(PeerCounts, DegreeThreeNoMoreControlPointsThanOcct) {
       EXPECT_EQ(cubic.curve.degree(), 3);
       EXPECT_LE(cubic.max_radial_error, eps);
       EXPECT_LE(distance(cubic.curve, c.R), eps);
-      EXPECT_LE(cubic.control_points, occt[i]);
+      EXPECT_LE(cubic.control_points, degree3_bound(c.name, i, best_cubic_peer(c.name, i)));
       char row[256];
-      std::snprintf(row, sizeof row, "| %s | %g | %d | %d | %.1f |\n", c.name.c_str(), eps,
-                    cubic.control_points, occt[i], took.count());
+      std::snprintf(row, sizeof row, "| %s | %g | %d | %d | %d | %.1f |\n", c.name.c_str(), eps,
+                    cubic.control_points, kOcct.at(c.name).degree3[i], kSisl.at(c.name).degree3[i],
+                    took.count());
       table += row;
     }
   }
@@ -293,19 +357,19 @@ TEST(PeerCounts, DegreeThreeNoMoreControlPointsThanOcct) {
 }
 
 // The full table takes minutes (Open CASCADE's fits take seconds each): run on request with
-// POLARFORM_PEER_TABLE=1. Asserts the degree-3 profile against OCCT's live degree-3 result too.
+// POLARFORM_PEER_TABLE=1 (or =sisl for SISL alone). Asserts the peers' curves within ε by the
+// tests' own measurement and ours against the live results, with the known misses; prints SISL's
+// counts as kSisl's rows.
 TEST(PeerCounts, EveryExampleAtThreeTolerances) {
-  if (!std::getenv("POLARFORM_PEER_TABLE")) GTEST_SKIP() << "set POLARFORM_PEER_TABLE=1 to run";
+  const char* mode = std::getenv("POLARFORM_PEER_TABLE");
+  if (!mode) GTEST_SKIP() << "set POLARFORM_PEER_TABLE=1 (or sisl) to run";
+  const bool occt = std::string(mode) != "sisl";
   std::string table =
-      "| example | ε mm | exact form | degree 3 | OCCT deg 3 | OCCT deg 3..8 |\n"
-      "|---|---|---|---|---|---|\n";
+      "| example | ε mm | exact form | degree 3 | OCCT deg 3 | OCCT deg 3..8 | SISL deg 3 | SISL "
+      "best of 3..8 |\n|---|---|---|---|---|---|---|---|\n";
+  std::string sisl_rows;
   for (const Contour& c : contours()) {
-    std::vector<Eigen::Vector2d> samples;
-    constexpr int kSamples = 1440;
-    for (int k = 0; k <= kSamples; ++k) {
-      const double t = c.R.start + (c.R.end - c.R.start) * k / kSamples;
-      samples.push_back(c.R(t) * Eigen::Vector2d(std::cos(t), std::sin(t)));
-    }
+    PeerCounts sisl_counts{};
     for (int i = 0; i < 3; ++i) {
       const double eps = std::pow(10.0, -2 - i);
       SCOPED_TRACE(c.name + " at " + std::to_string(eps));
@@ -320,27 +384,66 @@ TEST(PeerCounts, EveryExampleAtThreeTolerances) {
       std::snprintf(row, sizeof row, "| %s | %g | %d (%.2g) | %d (%.2g) |", c.name.c_str(), eps,
                     exact.curve.size(), d_exact, cubic.control_points, d_cubic);
       table += row;
-#if POLARFORM_HAVE_OCCT
-      int best = 0;
-      for (int deg_max : {3, 8}) {
-        const auto start = std::chrono::steady_clock::now();
-        const PeerCurve f = occt_points_to_bspline(c.R, 3, deg_max, eps);
-        const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
+      std::vector<int> all, cubics;
+      const auto peer_cell = [&](const PeerCurve& f, double seconds, bool is_cubic) {
         if (f.found) {
           EXPECT_LE(distance(f.curve, c.R), eps);
-          if (deg_max == 3) EXPECT_LE(cubic.control_points, f.control_points);
-          best = best == 0 ? f.control_points : std::min(best, f.control_points);
+          all.push_back(f.control_points);
+          if (is_cubic) cubics.push_back(f.control_points);
         }
         std::snprintf(row, sizeof row, " %d (%.2g, %.2f s) |", f.control_points, f.max_radial_error,
-                      took.count());
+                      seconds);
         table += row;
+      };
+      const auto timed = [](const auto& fit) {
+        const auto start = std::chrono::steady_clock::now();
+        PeerCurve f = fit();
+        return std::make_pair(
+            std::move(f),
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      };
+#if POLARFORM_HAVE_OCCT
+      for (int deg_max : {3, 8}) {
+        if (!occt) {
+          table += " |";
+          continue;
+        }
+        const auto [f, s] = timed([&] { return occt_points_to_bspline(c.R, 3, deg_max, eps); });
+        peer_cell(f, s, deg_max == 3);
       }
-      if (best > 0) EXPECT_LE(exact.curve.size(), exact_form_bound(c.name, i, best));
+#else
+      table += " | |";
 #endif
+#if POLARFORM_HAVE_SISL
+      const auto [f3, s3] = timed([&] { return sisl_s1961(c.R, 3, eps); });
+      peer_cell(f3, s3, true);
+      const auto [fb, sb] = timed([&] { return sisl_s1961_best(c.R, 3, 8, eps); });
+      peer_cell(fb, sb, false);
+      sisl_counts.degree3[i] = f3.control_points;
+      sisl_counts.best[i] = fb.control_points;
+#else
+      table += " | |";
+#endif
+      int best = 0, best_cubic = 0;
+      for (int n : all) best = best == 0 ? n : std::min(best, n);
+      for (int n : cubics) best_cubic = best_cubic == 0 ? n : std::min(best_cubic, n);
+      if (best > 0) {
+        EXPECT_LE(exact.curve.size(), exact_form_bound(c.name, i, best));
+      }
+      if (best_cubic > 0) {
+        EXPECT_LE(cubic.control_points, degree3_bound(c.name, i, best_cubic));
+      }
       table += "\n";
     }
+    char line[256];
+    std::snprintf(line, sizeof line, "    {\"%s\", {{%d, %d, %d}, {%d, %d, %d}}},\n",
+                  c.name.c_str(), sisl_counts.degree3[0], sisl_counts.degree3[1],
+                  sisl_counts.degree3[2], sisl_counts.best[0], sisl_counts.best[1],
+                  sisl_counts.best[2]);
+    sisl_rows += line;
   }
   std::printf("%s", table.c_str());
+  std::printf("kSisl:\n%s", sisl_rows.c_str());
   RecordProperty("table", table);
 }
 
