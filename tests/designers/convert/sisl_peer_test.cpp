@@ -66,8 +66,10 @@ void expect_verified(const PeerCurve& p, const PolarFunction& R, int degree, dou
   EXPECT_LT(p.control_points, 300);
   EXPECT_GT(p.max_radial_error, 0.0);
   EXPECT_LE(p.max_radial_error, tol);
+  // The peer's dense measurement finds the maxima the default one finds (both refined by Brent's
+  // search, which stops within 1e-7 of each bracket: values within 1e-9).
   EXPECT_GE(p.max_radial_error,
-            profile_error(p.curve, R, p.curve.front(), p.curve.back()).max_radial * (1 - 1e-12));
+            profile_error(p.curve, R, p.curve.front(), p.curve.back()).max_radial * (1 - 1e-9));
   EXPECT_LE(sampled_radial_error(p.curve, R), tol);
   const std::vector<double> ladder = {2.0, 1.4, 1.0, 0.7, 0.5, 0.35, 0.25};
   EXPECT_TRUE(std::any_of(ladder.begin(), ladder.end(), [&](double f) {
