@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "src/nurbs/brent_minimum.h"
+
 namespace polarform {
 
 namespace {
@@ -12,58 +14,6 @@ struct Sample {
   double lo, hi;              // the neighbouring samples' abscissae (t itself at the grid's ends)
   double f_lo = 0, f_hi = 0;  // and values
 };
-
-// Brent's method (Brent 1973, "localmin") for the maximum of f on [a, b], started at the sample
-// x (with f(x) = fx >= f at the ends a and b) with the ends as the two previous points, so that
-// the first step is the parabola through the three samples.
-Maximum brent_maximum(const std::function<double(double)>& f, const Sample& s) {
-  constexpr double kGolden = 0.3819660112501051;  // (3 − √5)/2
-  constexpr int kSteps = 40;
-  double a = s.lo, b = s.hi, x = s.t, fx = s.value;
-  // Brent minimises: g = −f.
-  double w = a, gw = -s.f_lo, v = b, gv = -s.f_hi, gx = -fx;
-  if (!(b > a)) return {x, fx};
-  const double tol = 1e-7 * (b - a);
-  // The step before last as large as the bracket, so that the first parabola is tried.
-  double d = b - a, e = b - a;
-  for (int step = 0; step < kSteps; ++step) {
-    const double xm = 0.5 * (a + b);
-    if (std::abs(x - xm) <= 2 * tol - 0.5 * (b - a)) break;
-    bool golden = true;
-    if (std::abs(e) > tol) {  // a parabola through x, w, v
-      double r = (x - w) * (gx - gv), q = (x - v) * (gx - gw), p = (x - v) * q - (x - w) * r;
-      q = 2 * (q - r);
-      if (q > 0) p = -p;
-      q = std::abs(q);
-      const double last = e;
-      e = d;
-      if (std::abs(p) < std::abs(0.5 * q * last) && p > q * (a - x) && p < q * (b - x)) {
-        d = p / q;
-        const double u = x + d;
-        if (u - a < 2 * tol || b - u < 2 * tol) d = xm >= x ? tol : -tol;
-        golden = false;
-      }
-    }
-    if (golden) {
-      e = x >= xm ? a - x : b - x;
-      d = kGolden * e;
-    }
-    const double u = x + (std::abs(d) >= tol ? d : (d > 0 ? tol : -tol));
-    const double gu = -f(u);
-    if (gu <= gx) {
-      (u >= x ? a : b) = x;
-      v = w, gv = gw, w = x, gw = gx, x = u, gx = gu;
-    } else {
-      (u < x ? a : b) = u;
-      if (gu <= gw || w == x) {
-        v = w, gv = gw, w = u, gw = gu;
-      } else if (gu <= gv || v == x || v == w) {
-        v = u, gv = gu;
-      }
-    }
-  }
-  return {x, -gx};
-}
 
 }  // namespace
 
@@ -102,8 +52,13 @@ Maximum refined_maximum(const std::function<double(double)>& f, const std::vecto
                     [](const Sample& x, const Sample& y) { return x.value > y.value; });
   best = {peaks.front().t, peaks.front().value};
   for (int k = 0; k < count; ++k) {
-    const Maximum m = brent_maximum(f, peaks[k]);
-    if (m.value > best.value) best = m;
+    // Brent minimises −f, from the peak and its neighbours, to 1e-7 of the bracket.
+    const Sample& s = peaks[k];
+    if (!(s.hi > s.lo)) continue;
+    const BrentStart start{s.t, -s.value, -s.f_lo, -s.f_hi};
+    const Minimum m =
+        brent_minimum([&](double t) { return -f(t); }, s.lo, s.hi, 1e-7 * (s.hi - s.lo), &start);
+    if (-m.value > best.value) best = {m.x, -m.value};
   }
   return best;
 }

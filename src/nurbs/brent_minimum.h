@@ -14,14 +14,28 @@ struct Minimum {
   double value = 0.0;
 };
 
+// Where a search starts when f is already known at the bracket's ends and at a point x between
+// them no higher than either (a sampled minimum): the first step is the parabola through the three.
+struct BrentStart {
+  double x, fx, fa, fb;
+};
+
 // The minimum of f on [a, b] to a relative tolerance of sqrt(machine epsilon) in x (the best a
 // smooth minimum allows) plus `absolute` (< 0: 1e-15 of the bracket); Brent 1973, ch. 5 (fmin).
+// Without `start`, from the golden-section point of [a, b].
 template <class F>
-Minimum brent_minimum(F&& f, double a, double b, double absolute = -1.0) {
+Minimum brent_minimum(F&& f, double a, double b, double absolute = -1.0,
+                      const BrentStart* start = nullptr) {
   constexpr double c = 0.3819660112501051;  // (3 − √5)/2
   const double a0 = a, b0 = b;
   double x = a + c * (b - a), w = x, v = x, d = 0.0, e = 0.0;
-  double fx = f(x), fw = fx, fv = fx;
+  double fx, fw, fv;
+  if (start) {  // the ends as the two previous points, the step before last the whole bracket
+    x = start->x, fx = start->fx, w = a, fw = start->fa, v = b, fv = start->fb;
+    d = e = b - a;
+  } else {
+    fx = fw = fv = f(x);
+  }
   for (int iter = 0; iter < 200; ++iter) {
     const double m = 0.5 * (a + b),
                  tol = 1.5e-8 * std::abs(x) + (absolute >= 0 ? absolute : 1e-15 * (b0 - a0)),
@@ -61,7 +75,8 @@ Minimum brent_minimum(F&& f, double a, double b, double absolute = -1.0) {
   }
   Minimum best{x, fx};
   for (const double end : {a0, b0})
-    if (const double fe = f(end); fe < best.value) best = {end, fe};
+    if (const double fe = start ? (end == a0 ? start->fa : start->fb) : f(end); fe < best.value)
+      best = {end, fe};
   return best;
 }
 
