@@ -26,6 +26,9 @@ struct FittedProfile {
   std::vector<double> sample_errors;  // per span: the largest radial error at the fit's samples
 };
 
+// The fit with the smallest largest sample error over the plain fit and its Lawson steps (the
+// samples at the middles of per_span equal parts of every span; the normal equations solved by a
+// band Cholesky bordered by a periodic space's wrap, bordered_band_cholesky.h).
 FittedProfile fit_profile(const SplineSpace& space, const ProfileTable& R,
                           const ProfileFitOptions& options);
 

@@ -167,10 +167,15 @@ std::vector<KeyFigure> cam_key_results(const CamDesignStage& design,
       out.push_back(std::move(f));
   if (conversion) {
     const PolarConversion& c = conversion->conversion;
+    // The conversion's steps: the product C = F·B on its base-circle arcs, then the refit or the
+    // knot removal that made it compact.
+    std::string steps = std::to_string(c.arcs.size()) + " base-circle arcs";
+    for (std::size_t k = 0; k < c.steps.size(); ++k)
+      steps += (k == 0 ? "; " : " → ") + c.steps[k].name + " " +
+               std::to_string(c.steps[k].control_points);
     out.push_back({"NURBS profile", "degree " + std::to_string(conversion->degree()) + ", " +
                                         std::to_string(conversion->control_points()) +
-                                        " control points, " + std::to_string(c.arcs.size()) +
-                                        " base-circle arcs"});
+                                        " control points (" + steps + ")"});
     out.push_back({"measured error", "max radial " + mm(c.max_radial_error) + ", max normal " +
                                          mm(c.max_normal_error) + " (tolerance " + mm(c.tolerance) +
                                          ")"});
