@@ -46,6 +46,19 @@ bool ConversionPanel::draw_settings(ConversionOptions& o) {
       changed = true;
     }
   }
+  static constexpr std::array<std::string_view, 3> kCompactions = {
+      "refit (fewest control points)", "knot removal", "none (exactly F·B)"};
+  int compaction = o.compaction == Compaction::refit ? 0 : o.compaction == Compaction::none ? 2 : 1;
+  if (combo("compaction", compaction, kCompactions)) {
+    o.compaction = compaction == 0   ? Compaction::refit
+                   : compaction == 2 ? Compaction::none
+                                     : Compaction::full;
+    changed = true;
+  }
+  help_marker(
+      "How the product C = F·B is made compact within the tolerance: refitted by a B-spline of "
+      "degree 3-6 with knots placed by need (the project's compaction=\"refit\"), its knots "
+      "removed (NURBS Book A5.8), or left as the product (dwells exact circular arcs).");
   changed |= drag_number("function share", o.function_share, 0.005, 0.01, 0.99, "%.2f");
   help_marker(
       "The share of the tolerance allowed for representing R(θ) as a B-spline F; the arcs get the "
@@ -71,6 +84,10 @@ void ConversionPanel::draw_result(const PolarConversion* c, int degree, int cont
   row("degree",
       std::to_string(degree) + (c->curve.is_rational() ? " (rational)" : " (polynomial)"));
   row("control points", std::to_string(control_points));
+  std::string steps;  // the conversion's steps, e.g. "product 110 → refit 25"
+  for (const ConversionStep& step : c->steps)
+    steps += (steps.empty() ? "" : " → ") + step.name + " " + std::to_string(step.control_points);
+  row("steps", steps);
   row("max radial error", um(c->max_radial_error) + " (tolerance " + um(c->tolerance) + ")",
       c->max_radial_error <= c->tolerance ? color::ok : color::error);
   row("max normal error", um(c->max_normal_error));

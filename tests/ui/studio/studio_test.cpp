@@ -590,6 +590,30 @@ edit
     EXPECT_TRUE(fs::exists(dir_ / "vessel_outputs" / file)) << file;
 }
 
+// The project's compaction is the studio's: the roller refitted by default (the product's 110
+// control points to 25, report.json's steps "product" → "refit"), left as the product with
+// compaction="none".
+TEST_F(StudioTest, TheProjectsCompactionDecidesTheProfile) {
+  std::string none = slurp(kExamples / "cams" / "roller.xml");
+  const auto at = none.find("<conversion ");
+  ASSERT_NE(at, std::string::npos);
+  none.insert(at + 12, "compaction=\"none\" ");
+  const fs::path project = write("roller_none.xml", none);
+  const fs::path script = write("numbers.txt", "numbers cam\n");
+  for (const auto& [path, steps, points] :
+       {std::tuple{kExamples / "cams" / "roller.xml", "refit", 25},
+        {project, "knot removal", 110}}) {
+    SCOPED_TRACE(path.string());
+    const StudioRun r = run_studio("--project '" + path.string() + "' --script '" +
+                                   script.string() + "' --size 1280x800");
+    ASSERT_EQ(r.status, 0) << r.output;
+    const auto cam = numbers(r.output, "cam:");
+    EXPECT_EQ(number(cam, "report.control_points"), points);
+    EXPECT_EQ(number(cam, "report.control_points_steps.0.control_points"), 110);
+    EXPECT_EQ(cam.at("report.control_points_steps.1.step"), steps);
+  }
+}
+
 // The last project, the workspace and the layout survive a restart (--state-dir keeps the state
 // of headless runs, as ~/.config/polarform-studio keeps the desktop's).
 TEST_F(StudioTest, StateIsKeptBetweenRuns) {
