@@ -218,3 +218,18 @@ TEST(PolarConversion, AMirrorSymmetricProfileIsRefittedAsItsOwnMirrorImage) {
 
 }  // namespace
 }  // namespace polarform
+
+namespace polarform {
+namespace {
+
+// A tolerance below what R's evaluation can reach: the product's arc splitting gives up with a
+// NumericalError, and the refit running beside it is stopped (the conversion returns rather than
+// waiting for a refit to 1e-12 mm).
+TEST(PolarConversion, AnUnreachableToleranceFailsAndStopsTheRefit) {
+  ConversionOptions options;
+  options.tolerance = 1e-12;
+  EXPECT_THROW(convert_polar_function(example_contour("roller"), options), NumericalError);
+}
+
+}  // namespace
+}  // namespace polarform
