@@ -13,33 +13,13 @@
 
 #include "designers/convert/conversion_error.h"
 #include "src/nurbs/knots.h"
+#include "tests/support/designers/peer_profiles.h"
 
 namespace polarform {
 namespace {
 
-PolarFunction trefoil() {
-  PolarFunction R;
-  R.start = 0.0;
-  R.end = 2 * std::numbers::pi;
-  R.derivatives = [](double t, int d, double* out) {
-    const double c = std::cos(3 * t), s = std::sin(3 * t);
-    const double all[4] = {40 + 5 * c, -15 * s, -45 * c, 135 * s};
-    std::copy(all, all + d + 1, out);
-  };
-  return R;
-}
-
-// Max |ρ − R(ψ)| over 20 points per knot span, ψ the point's own polar angle.
-double sampled_radial_error(const NurbsCurve2d& c, const PolarFunction& R) {
-  const std::vector<Breakpoint> b = breakpoints(c.knots());
-  double worst = 0.0;
-  for (std::size_t j = 0; j + 1 < b.size(); ++j)
-    for (int k = 0; k <= 20; ++k) {
-      const Eigen::Vector2d p = c(b[j].value + (b[j + 1].value - b[j].value) * k / 20);
-      worst = std::max(worst, std::abs(p.norm() - R(std::atan2(p.y(), p.x()))));
-    }
-  return worst;
-}
+using test::sampled_radial_error;
+using test::trefoil;
 
 TEST(OcctPeer, FitsAClosedContourWithinTheTolerance) {
   if constexpr (kOcctPeersAvailable) {
