@@ -44,19 +44,7 @@ void expect_verified(const PeerCurve& p, const PolarFunction& R, int degree, dou
   // Sane: more than a Bézier's, far fewer than the 1441 samples.
   EXPECT_GT(p.control_points, degree);
   EXPECT_LT(p.control_points, 300);
-  EXPECT_GT(p.max_radial_error, 0.0);
-  EXPECT_LE(p.max_radial_error, tol);
-  // The peer's dense measurement finds the maxima the default one finds (both refined by Brent's
-  // search, which stops within 1e-7 of each bracket: values within 1e-9).
-  EXPECT_GE(p.max_radial_error,
-            profile_error(p.curve, R, p.curve.front(), p.curve.back()).max_radial * (1 - 1e-9));
-  EXPECT_LE(sampled_radial_error(p.curve, R), tol);
-  const std::vector<double> ladder = {2.0, 1.4, 1.0, 0.7, 0.5, 0.35, 0.25};
-  EXPECT_TRUE(std::any_of(ladder.begin(), ladder.end(), [&](double f) {
-    return p.peer_tolerance == f * tol;
-  })) << p.peer_tolerance;
-  EXPECT_NEAR(p.curve.front(), R.start, 1e-12);
-  EXPECT_NEAR(p.curve.back(), R.end, 1e-12);
+  test::expect_verified_peer(p, R, tol);
 }
 
 Eigen::Vector2d on_contour(const PolarFunction& R, double t) {
