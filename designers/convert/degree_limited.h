@@ -51,7 +51,8 @@ LimitedCurve approximate_polar_curve(const PolarFunction& R, int degree, double 
                                      const LimitedEffort& effort = {});
 
 // The degree-limited fit at the best of `degrees` on one table of R: every degree's knots placed by
-// need, then fitted to the end in the order of the control points the placements predict until
+// need, then fitted to the end in the order of the control points the placements predict (each
+// placement's minimax fit on its spans, scaled as if its error went like h^(p+1)) until
 // `effort.finalists` have met the tolerance, and the verified curve with the fewest control points
 // kept (the lower degree among equals). The degrees' placements and the finalists' fits run on
 // threads of their own; R's derivatives must be safe to call concurrently (every PolarFunction's
