@@ -45,10 +45,17 @@ struct LimitedCurve {
 // measured error (de Boor), a knot wherever a derivative of order <= min(p, 3) of R jumps, the
 // fewest spans on that density whose minimax fit meets tol, knot removal by refit, then the
 // result measured against R itself (a span split where it misses). The fits let the curve slide
-// along the profile and are pushed toward the minimax radial error (profile_fit.h). Throws
-// NumericalError if 20000 spans do not reach tol.
+// along the profile and are pushed toward the minimax radial error (profile_fit.h). A
+// mirror-symmetric R (polar_function.h) is fitted as its own mirror image (Mirror::at_end on its
+// first half). Throws NumericalError if 20000 spans do not reach tol.
 LimitedCurve approximate_polar_curve(const PolarFunction& R, int degree, double tol,
                                      const LimitedEffort& effort = {});
+
+// Whether R over [a, m] is the first half of a profile that is its own mirror image in the line
+// θ = m (a vessel head's meridian over [0, π/2], mirrored in the head's axis): the curve then
+// covers the whole profile over [a, 2m − a], its control values tied in mirror pairs (a simple
+// knot at m, or none), and is fitted and measured on [a, m].
+enum class Mirror { none, at_end };
 
 // The degree-limited fit at the best of `degrees` on one table of R: every degree's knots placed by
 // need, then fitted to the end in the order of the control points the placements predict (each
@@ -60,7 +67,7 @@ LimitedCurve approximate_polar_curve(const PolarFunction& R, int degree, double 
 // `stop` is requested (between two fits).
 LimitedCurve fewest_control_points(const PolarFunction& R, const std::vector<int>& degrees,
                                    double tol, const LimitedEffort& effort = {},
-                                   std::stop_token stop = {});
+                                   std::stop_token stop = {}, Mirror mirror = Mirror::none);
 
 // Interpolation of N points R(ψ_k)(cos ψ_k, sin ψ_k) equally spaced in ψ, with the fewest N (found
 // by bisection) whose measured radial error meets tol: the usual "spline through points" export.

@@ -16,7 +16,6 @@
 #include "src/number_text.h"
 #include "src/nurbs/curve_join.h"
 #include "src/nurbs/curve_reversal.h"
-#include "src/nurbs/knot_removal.h"
 #include "src/nurbs/symbolic_product.h"
 
 namespace polarform {
@@ -28,9 +27,9 @@ constexpr std::size_t kMaxArcs = 2000;
 // their derivatives, 6 on near-circular heads, 3 where the others fold) and its effort: a coarser
 // table of R than the export's and half its Lawson steps (together < 1 % more control points),
 // two degrees fitted to the end. Measured on the 66 rows of tests/jobs/study/peer_counts_test.cpp
-// (before heads were mirrored): 1607 control points in all, against 1779 with 6 placement rounds
-// and 3 knot removals, which took 115 M instructions against 211 M (callgrind, the whole
-// BM_RollerCamConversion1um run).
+// (before heads were mirrored, which took the total from 1580 to 1538): 1607 control points in
+// all, against 1779 with 6 placement rounds and 3 knot removals, which took 115 M instructions
+// against 211 M (callgrind, the whole BM_RollerCamConversion1um run).
 const std::vector<int> kRefitDegrees = {3, 4, 5, 6};
 constexpr LimitedEffort kRefitEffort = {512, 30, 4, 20, 2};
 
@@ -53,60 +52,41 @@ std::vector<int> measure_arcs(const NurbsCurve2d& C, const PolarFunction& R,
   return failing;
 }
 
-// Whether r = R(θ) is its own mirror image in the line θ = (start + end)/2, which is then a
-// breakpoint (a vessel head's meridian over [0, π], mirrored in its axis): R(start + end − θ) =
-// R(θ) to a thousandth of tol at 257 angles.
-bool mirror_symmetric(const PolarFunction& R, double tol) {
-  const double mid = 0.5 * (R.start + R.end);
-  if (R.closed() || !std::binary_search(R.breakpoints.begin(), R.breakpoints.end(), mid))
-    return false;
-  for (int k = 0; k <= 256; ++k) {
-    const double theta = R.start + (mid - R.start) * k / 256;
-    if (!(std::abs(R(theta) - R(R.start + R.end - theta)) <= 1e-3 * tol)) return false;
-  }
-  return true;
-}
-
-// The curve C over [a, m] and its mirror image x → −x traversed on [m, 2m − a] (the point at u
-// being C(2m − u) mirrored), joined at m, where the join is C1 (C ends level: the mirror's tangent
-// continues it); the joint's knot then goes once exactly, and a second time if that moves the
-// curve by at most `budget`.
-NurbsCurve2d with_mirror_image(const NurbsCurve2d& C, double budget) {
-  const double a = C.front(), m = C.back();
-  const NurbsCurve2d back = reversed(C);  // C(a + m − v) on [a, m]
+// The mirror image of C (over [a, b]) in the line through the origin at polar angle m, traversed
+// back over [2m − b, 2m − a]: its point at u is C(2m − u) reflected.
+NurbsCurve2d mirror_image(const NurbsCurve2d& C, double m) {
+  const NurbsCurve2d back = reversed(C);  // C(a + b − v) on [a, b]
   Knots knots = back.knots();
-  for (double& u : knots) u += m - a;  // v = u − (m − a): C(2m − u)
+  for (double& u : knots) u += 2 * m - C.front() - C.back();
+  Eigen::Matrix2d S;  // the reflection in the line
+  S << std::cos(2 * m), std::sin(2 * m), std::sin(2 * m), -std::cos(2 * m);
   NurbsCurve2d::Points points = back.control_points();
-  for (NurbsCurve2d::Point& P : points) P.x() = -P.x();
-  const NurbsCurve2d joined =
-      join_curves({C, NurbsCurve2d(C.degree(), std::move(knots), points, back.weights())});
-  const double size = joined.homogeneous().coefs().cwiseAbs().maxCoeff();
-  KnotRemoval once = remove_knot(joined.homogeneous(), m, 1, 1e-9 * size);
-  if (once.removed != 1) return joined;
-  const KnotRemoval twice = remove_knot(once.spline, m, 1, budget);
-  return NurbsCurve2d(twice.removed == 1 ? twice.spline : once.spline);
+  for (NurbsCurve2d::Point& P : points) P = S * P;
+  return NurbsCurve2d(C.degree(), std::move(knots), points, back.weights());
 }
 
 // The refit with the fewest control points: a closed R's in one periodic piece; an open R's piece
 // by piece between its breakpoints (each with R's end points and end tangents), joined — so that a
-// vessel head's apex stays on the axis with the head's tangent there; a mirror-symmetric R's first
-// half so, and the second half its mirror image. The coarse table first; where it misses a sharp
-// turn of R, the export's effort. Each piece verified against R's table when `on_table` (the
+// vessel head meets its shell along the shell's tangent. A mirror-symmetric R's pieces up to the
+// last breakpoint before the mirror line so, then the piece across the line as one curve that is
+// its own mirror image (its control values tied in pairs: the apex on the axis, level, and no
+// joint there), then the first pieces' mirror images. The coarse table first; where it misses a
+// sharp turn of R, the export's effort. Each piece verified against R's table when `on_table` (the
 // caller measures the result against R itself). Nothing if neither reaches tol or `stop` is
 // requested.
 std::optional<LimitedCurve> fewest_control_points_refit(const PolarFunction& R, double tol,
                                                         bool on_table, std::stop_token stop) {
-  const auto fit = [&](const PolarFunction& piece) {
+  const auto fit = [&](const PolarFunction& piece, Mirror mirror) {
     LimitedEffort lean = kRefitEffort, full{.finalists = 2};
     lean.verify_on_table = full.verify_on_table = on_table;
     try {
-      return fewest_control_points(piece, kRefitDegrees, tol, lean, stop);
+      return fewest_control_points(piece, kRefitDegrees, tol, lean, stop, mirror);
     } catch (const NumericalError&) {
-      return fewest_control_points(piece, kRefitDegrees, tol, full, stop);
+      return fewest_control_points(piece, kRefitDegrees, tol, full, stop, mirror);
     }
   };
   try {
-    if (R.closed() || R.breakpoints.empty()) return fit(R);
+    if (R.closed() || R.breakpoints.empty()) return fit(R, Mirror::none);
     const bool mirrored = mirror_symmetric(R, tol);
     const double end = mirrored ? 0.5 * (R.start + R.end) : R.end;
     std::vector<double> bounds{R.start};
@@ -114,20 +94,18 @@ std::optional<LimitedCurve> fewest_control_points_refit(const PolarFunction& R, 
       if (b < end) bounds.push_back(b);
     bounds.push_back(end);
     std::vector<NurbsCurve2d> pieces;
-    double error = 0.0;
     for (std::size_t k = 0; k + 1 < bounds.size(); ++k) {
       PolarFunction piece = R;
       piece.start = bounds[k], piece.end = bounds[k + 1];
       piece.breakpoints.clear();
       piece.exact.reset();
-      LimitedCurve c = fit(piece);
-      error = std::max(error, c.max_radial_error);
-      pieces.push_back(std::move(c.curve));
+      const bool across = mirrored && k + 2 == bounds.size();
+      pieces.push_back(fit(piece, across ? Mirror::at_end : Mirror::none).curve);
     }
+    for (std::size_t k = pieces.size() - 1; mirrored && k-- > 0;)
+      pieces.push_back(mirror_image(pieces[k], end));
     LimitedCurve out;
     out.curve = join_curves(pieces);
-    // A quarter of the error budget left for the joint's second removal.
-    if (mirrored) out.curve = with_mirror_image(out.curve, 0.25 * (tol - error));
     out.control_points = out.curve.size();
     return out;
   } catch (const NumericalError&) {

@@ -25,7 +25,8 @@ struct Sample {
 // zero. An open (clamped) curve's end points are the profile's, so that the curve, free to slide
 // along the profile elsewhere, neither ends short of it nor runs past it, and its second and last
 // but one control values lie on the profile's end tangents, so that the curve leaves and meets
-// the profile's ends along them (a vessel head meets its shell tangentially).
+// the profile's ends along them (a vessel head meets its shell tangentially). A mirrored curve
+// has its start so; its middle control value, if any, lies on the mirror line.
 struct Held {
   int index;
   Eigen::Vector2d value;
@@ -37,20 +38,29 @@ std::vector<Held> held(const SplineSpace& space, const ProfileTable& R) {
   if (space.periodic()) return {};
   std::vector<Held> out;
   const int n = space.size();
-  for (int end = 0; end < 2; ++end) {
+  // The curve's control values.
+  const int all = space.mirrored() ? 2 * n - (space.middle_on_mirror_line() ? 1 : 0) : n;
+  for (int end = 0; end < (space.mirrored() ? 1 : 2); ++end) {
     const double t = end == 0 ? space.breaks().front() : space.breaks().back();
     double d[2];
     R.derivatives(t, d);
     const Eigen::Vector2d er(std::cos(t), std::sin(t)), et(-er.y(), er.x());
     const Eigen::Vector2d point = d[0] * er;
     out.push_back({end == 0 ? 0 : n - 1, point});
-    if (n < 4) continue;  // the end tangents' control values would be an end's or each other's
+    if (all < 4) continue;  // the end tangents' control values would be an end's or each other's
     // r = R(θ) runs along R'·e_r + R·e_θ.
     const Eigen::Vector2d tangent = (d[1] * er + d[0] * et).normalized();
     Held line{end == 0 ? 1 : n - 2, point};
     line.Q << tangent.x(), -tangent.y(), tangent.y(), tangent.x();
     line.held[0] = false;
     out.push_back(line);
+  }
+  if (space.middle_on_mirror_line()) {
+    const double b = space.breaks().back();
+    Held middle{n - 1, Eigen::Vector2d::Zero()};
+    middle.Q << std::cos(b), -std::sin(b), std::sin(b), std::cos(b);
+    middle.held[0] = false;
+    out.push_back(middle);
   }
   return out;
 }
@@ -83,25 +93,41 @@ Eigen::MatrixXd solve(const SplineSpace& space, const std::vector<Sample>& ss,
   const int p = space.degree(), n = space.size();
   std::vector<Eigen::Matrix2d> band(static_cast<std::size_t>(n) * (p + 1), Eigen::Matrix2d::Zero());
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(2 * n);
+  // Block (J, J + d) of the upper band, d = 0..p, for the distinct values J and K = J + d
+  // (periodic: modulo n) of two basis functions; a mirrored space's reflected values enter as S·x.
+  const auto block = [&](int J, int d) -> Eigen::Matrix2d& {
+    return band[static_cast<std::size_t>(J) * (p + 1) + d];
+  };
+  const Eigen::Matrix2d& S = space.reflection();
   for (const Sample& s : ss) {
     const Eigen::Matrix2d B =
         s.weight * (s.direction * s.direction.transpose() + slide * Eigen::Matrix2d::Identity());
     const Eigen::Vector2d Bp =
         s.weight * (s.direction * s.direction.dot(s.point) + slide * s.anchor);
+    int value[kMaxDegree + 1];
+    bool reflected[kMaxDegree + 1];
     for (int j = 0; j <= p; ++j) {
-      const int J = (s.first + j) % n;
-      rhs.segment<2>(2 * J) += s.N[j] * Bp;
-      // Upper band only: block (J, J + d) for d = 0..p - j.
-      for (int k = j; k <= p; ++k)
-        band[static_cast<std::size_t>(J) * (p + 1) + (k - j)] += s.N[j] * s.N[k] * B;
+      value[j] = space.value(s.first + j), reflected[j] = space.reflected(s.first + j);
+      rhs.segment<2>(2 * value[j]) += s.N[j] * (reflected[j] ? Eigen::Vector2d(S * Bp) : Bp);
     }
+    for (int j = 0; j <= p; ++j)
+      for (int k = j; k <= p; ++k) {
+        Eigen::Matrix2d M = s.N[j] * s.N[k] * B;
+        if (reflected[j]) M = S * M;
+        if (reflected[k]) M = M * S;
+        // A mirrored space's values fold back past the middle: their order may turn.
+        const int d = space.periodic() ? k - j : value[k] - value[j];
+        if (d > 0 || (d == 0 && j == k))
+          block(value[j], d) += M;
+        else if (d < 0)
+          block(value[k], -d) += M.transpose();
+        else
+          block(value[j], 0) += M + M.transpose();  // two values of one mirror pair
+      }
   }
   // Held values, x_h = value + Q·y_h: the value's share of every equation moves to the
   // right-hand side, the blocks of h turn into Q's frame, and each held component of y_h gets the
   // equation y = 0 (its row and column cleared).
-  const auto block = [&](int J, int d) -> Eigen::Matrix2d& {
-    return band[static_cast<std::size_t>(J) * (p + 1) + d];
-  };
   for (const Held& h : hold) {
     for (int J = 0; J < n; ++J)
       for (int d = 0; d <= p; ++d) {
@@ -152,10 +178,12 @@ Eigen::MatrixXd solve(const SplineSpace& space, const std::vector<Sample>& ss,
   return x;
 }
 
-Eigen::Vector2d curve_point(const Sample& s, const Eigen::MatrixXd& coefs, int p, int n) {
-  Eigen::Vector2d c = Eigen::Vector2d::Zero();
-  for (int j = 0; j <= p; ++j) c += s.N[j] * coefs.col((s.first + j) % n);
-  return c;
+Eigen::Vector2d curve_point(const Sample& s, const Eigen::MatrixXd& coefs,
+                            const SplineSpace& space) {
+  Eigen::Vector2d c = Eigen::Vector2d::Zero(), reflected = Eigen::Vector2d::Zero();
+  for (int j = 0; j <= space.degree(); ++j)
+    (space.reflected(s.first + j) ? reflected : c) += s.N[j] * coefs.col(space.value(s.first + j));
+  return c + space.reflection() * reflected;
 }
 
 // The sample relinearised at the curve's current point c = C(t) (a Gauss–Newton step on the
@@ -183,14 +211,13 @@ FittedProfile fit_profile(const SplineSpace& space, const ProfileTable& R,
   const std::vector<Held> hold = held(space, R);
   FittedProfile best{solve(space, ss, hold, options.slide), {}};
   Eigen::MatrixXd coefs = best.coefs;
-  const int p = space.degree(), n = space.size();
   double best_max = std::numeric_limits<double>::infinity();
   std::vector<double> r(ss.size(), 0.0);
   for (int step = 0; step <= options.lawson_steps; ++step) {
     if (step > 0) coefs = solve(space, ss, hold, options.slide);
     double worst = 0.0, sum = 0.0;
     for (std::size_t i = 0; i < ss.size(); ++i) {
-      r[i] = relinearise(ss[i], curve_point(ss[i], coefs, p, n), R);
+      r[i] = relinearise(ss[i], curve_point(ss[i], coefs, space), R);
       worst = std::max(worst, r[i]);
     }
     if (worst < best_max) {

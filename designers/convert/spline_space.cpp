@@ -1,23 +1,35 @@
 #include "designers/convert/spline_space.h"
 
+#include <cmath>
+
 #include "src/error.h"
 #include "src/nurbs/basis.h"
 #include "src/nurbs/periodic.h"
 
 namespace polarform {
 
-SplineSpace::SplineSpace(int degree, bool periodic, std::vector<double> breaks)
-    : degree_(degree), periodic_(periodic), breaks_(std::move(breaks)) {
+SplineSpace::SplineSpace(int degree, Ends ends, std::vector<double> breaks)
+    : degree_(degree), ends_(ends), breaks_(std::move(breaks)) {
   const int k = spans();
-  if (k < 1 || (periodic_ && k < degree_ + 1))
+  if (k < 1 || (periodic() && k < degree_ + 1))
     throw InputError("spline space: too few spans for degree " + std::to_string(degree_));
-  if (periodic_) {
+  const double a = breaks_.front(), b = breaks_.back();
+  std::vector<double> interior(breaks_.begin() + 1, breaks_.end() - 1);
+  if (periodic()) {
     knots_ = periodic_knots(degree_, breaks_);
     size_ = k;
-  } else {
-    knots_ = clamped_knots(degree_, breaks_.front(), breaks_.back(),
-                           std::vector<double>(breaks_.begin() + 1, breaks_.end() - 1));
+  } else if (!mirrored()) {
+    knots_ = clamped_knots(degree_, a, b, interior);
     size_ = k + degree_;
+  } else {
+    if (ends_ == Ends::mirrored) interior.push_back(b);
+    for (int i = k - 1; i >= 1; --i)
+      interior.push_back(2 * b - breaks_[static_cast<std::size_t>(i)]);
+    knots_ = clamped_knots(degree_, a, 2 * b - a, interior);
+    const int n = static_cast<int>(interior.size()) + 1 + degree_;
+    size_ = (n + 1) / 2;
+    // The reflection in the line at angle b: (x, y) → (x cos 2b + y sin 2b, x sin 2b − y cos 2b).
+    reflection_ << std::cos(2 * b), std::sin(2 * b), std::sin(2 * b), -std::cos(2 * b);
   }
   n_ = static_cast<int>(knots_.size()) - degree_ - 1;
 }
@@ -28,22 +40,36 @@ int SplineSpace::basis(double t, double* N) const {
   return span - degree_;
 }
 
+int SplineSpace::value(int k) const {
+  if (periodic()) return k % size_;
+  return reflected(k) ? n_ - 1 - k : k;
+}
+
 Eigen::Vector2d SplineSpace::point(const Eigen::MatrixXd& coefs, double t) const {
   double N[kMaxDegree + 1];
   const int first = basis(t, N);
-  Eigen::Vector2d p = Eigen::Vector2d::Zero();
-  for (int j = 0; j <= degree_; ++j) p += N[j] * coefs.col((first + j) % size_);
-  return p;
+  Eigen::Vector2d p = Eigen::Vector2d::Zero(), q = Eigen::Vector2d::Zero();
+  for (int j = 0; j <= degree_; ++j)
+    (reflected(first + j) ? q : p) += N[j] * coefs.col(value(first + j));
+  return p + reflection_ * q;
 }
 
 NurbsCurve2d SplineSpace::curve(const Eigen::MatrixXd& coefs) const {
   const BSpline plain =
-      periodic_ ? clip(periodic_bspline(degree_, breaks_, coefs), breaks_.front(), breaks_.back())
-                : BSpline(degree_, knots_, coefs);
+      periodic() ? clip(periodic_bspline(degree_, breaks_, coefs), breaks_.front(), breaks_.back())
+                 : BSpline(degree_, knots_, mirrored() ? unfolded(coefs) : coefs);
   Eigen::MatrixXd h(3, plain.size());
   h.topRows(2) = plain.coefs();
   h.row(2).setOnes();
   return NurbsCurve2d(BSpline(degree_, plain.knots(), std::move(h)));
+}
+
+Eigen::MatrixXd SplineSpace::unfolded(const Eigen::MatrixXd& coefs) const {
+  Eigen::MatrixXd out(2, n_);
+  for (int k = 0; k < n_; ++k)
+    out.col(k) = reflected(k) ? Eigen::Vector2d(reflection_ * coefs.col(value(k)))
+                              : Eigen::Vector2d(coefs.col(value(k)));
+  return out;
 }
 
 }  // namespace polarform

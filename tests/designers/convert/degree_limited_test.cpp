@@ -16,6 +16,7 @@
 #include "src/error.h"
 #include "tests/support/designers/contour_distance.h"
 #include "tests/support/designers/example_cams.h"
+#include "tests/support/designers/mirror_symmetric_profile.h"
 
 namespace polarform {
 namespace {
@@ -145,10 +146,40 @@ TEST(DegreeLimited, FewestControlPointsStopsWhenAsked) {
                NumericalError);
 }
 
+// Fitted on its first half with Mirror::at_end, the profile's curve covers the whole of it as its
+// own mirror image, within tol by dense sampling, with the profile's end point, and with no more
+// control points than the fit of the whole profile (which has no knot to spare at the apex).
+TEST(DegreeLimited, AMirroredFitIsTheWholeProfileAsItsOwnMirrorImage) {
+  const PolarFunction R = test::mirror_symmetric_profile(),
+                      whole = test::mirror_symmetric_profile(false);
+  PolarFunction half = R;
+  half.end = std::numbers::pi / 2;
+  half.breakpoints.clear();
+  for (double tol : {1e-2, 1e-4}) {
+    SCOPED_TRACE(tol);
+    const LimitedCurve mirrored =
+        fewest_control_points(half, {3, 4, 5, 6}, tol, {}, {}, Mirror::at_end);
+    EXPECT_DOUBLE_EQ(mirrored.curve.front(), 0.0);
+    EXPECT_NEAR(mirrored.curve.back(), std::numbers::pi, 1e-15);
+    test::expect_own_mirror_image(mirrored.curve);
+    EXPECT_NEAR((mirrored.curve(0.0) - Eigen::Vector2d(R(0.0), 0.0)).norm(), 0.0, 1e-9);
+    EXPECT_LE(mirrored.max_radial_error, tol);
+    EXPECT_LE(dense_distance(mirrored.curve, R), tol);
+    const LimitedCurve plain = fewest_control_points(whole, {3, 4, 5, 6}, tol);
+    EXPECT_LE(mirrored.control_points, plain.control_points);
+    // approximate_polar_curve finds the mirror itself.
+    const LimitedCurve cubic = approximate_polar_curve(R, 3, tol);
+    EXPECT_EQ(cubic.curve.degree(), 3);
+    test::expect_own_mirror_image(cubic.curve);
+    EXPECT_LE(dense_distance(cubic.curve, R), tol);
+  }
+}
+
 TEST(DegreeLimited, RejectsBadArguments) {
   const PolarFunction R = contour("roller");
   EXPECT_THROW(approximate_polar_curve(R, 0, 1e-3), InputError);
   EXPECT_THROW(approximate_polar_curve(R, 3, 0.0), InputError);
+  EXPECT_THROW(fewest_control_points(R, {3}, 1e-3, {}, {}, Mirror::at_end), InputError);
 }
 
 }  // namespace

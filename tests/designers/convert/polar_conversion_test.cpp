@@ -14,6 +14,7 @@
 #include "designers/cam/contour_polar_function.h"
 #include "designers/cam/displacement_polar_function.h"
 #include "tests/support/designers/example_cams.h"
+#include "tests/support/designers/mirror_symmetric_profile.h"
 
 namespace polarform {
 namespace {
@@ -164,25 +165,8 @@ TEST(PolarConversion, TighterToleranceNeverNeedsFewerArcs) {
 namespace polarform {
 namespace {
 
-// r = 50 + 5 cos 2θ + cos 4θ on [0, π], its own mirror image in θ = π/2 (a breakpoint, as a
-// vessel head's apex is): the refit fits the first half and mirrors it.
-PolarFunction mirror_symmetric_profile() {
-  PolarFunction R;
-  R.start = 0.0;
-  R.end = std::numbers::pi;
-  R.breakpoints = {std::numbers::pi / 2};
-  R.derivatives = [](double t, int d, double* out) {
-    const double c2 = std::cos(2 * t), s2 = std::sin(2 * t), c4 = std::cos(4 * t),
-                 s4 = std::sin(4 * t);
-    const double all[4] = {50 + 5 * c2 + c4, -10 * s2 - 4 * s4, -20 * c2 - 16 * c4,
-                           40 * s2 + 64 * s4};
-    for (int k = 0; k <= d; ++k) out[k] = all[k];
-  };
-  return R;
-}
-
 TEST(PolarConversion, AMirrorSymmetricProfileIsRefittedAsItsOwnMirrorImage) {
-  const PolarFunction R = mirror_symmetric_profile();
+  const PolarFunction R = test::mirror_symmetric_profile();
   for (double tol : {1e-2, 1e-4}) {
     SCOPED_TRACE(tol);
     ConversionOptions options;
@@ -190,21 +174,8 @@ TEST(PolarConversion, AMirrorSymmetricProfileIsRefittedAsItsOwnMirrorImage) {
     const PolarConversion c = convert_polar_function(R, options);
     ASSERT_EQ(c.steps.back().name, "refit");
     const NurbsCurve2d& C = c.curve;
-    const double a = C.front(), b = C.back(), m = 0.5 * (a + b);
-    // Mirror images: C(a + b − u) = C(u) with x negated, knots symmetric about the apex.
-    for (int k = 0; k <= 200; ++k) {
-      const double u = a + (b - a) * k / 200;
-      const Eigen::Vector2d p = C(u), q = C(a + b - u);
-      EXPECT_NEAR(p.x(), -q.x(), 1e-9);
-      EXPECT_NEAR(p.y(), q.y(), 1e-9);
-    }
-    for (std::size_t i = 0; i < C.knots().size(); ++i)
-      EXPECT_NEAR(C.knots()[i] - a, b - C.knots()[C.knots().size() - 1 - i], 1e-12);
-    // On the axis, level, and at least C1 across it: the apex is a knot of multiplicity < p.
-    const auto d = C.derivatives(m, 1);
-    EXPECT_NEAR(d[0].x(), 0.0, 1e-12);
-    EXPECT_NEAR(d[1].y(), 0.0, 1e-9 * d[1].norm());
-    EXPECT_LT(std::count(C.knots().begin(), C.knots().end(), m), C.degree());
+    test::expect_own_mirror_image(C);
+    const double a = C.front(), b = C.back();
     // Within tol by dense sampling against R.
     double worst = 0.0;
     for (int k = 0; k <= 20000; ++k) {

@@ -267,21 +267,14 @@ int best_cubic_peer(const std::string& name, int i) {
 }
 
 // The exact form (the product refitted, as plate cams and vessel heads export it): no more control
-// points than the best peer fit, but for known misses, each held to its count:
-// - the 3-4-5 rise-return without dwells at 1 µm, 17 against OCCT's 15 (degree 8, 7 spans; a
-//   periodic spline of degree p needs p + 1 spans; 16 before the refit's placement used the
-//   errors at its samples, a change that saved 10 % over all rows);
-// - near-circular heads at the loose tolerances: a meridian's first half is refitted with its end
-//   points and end tangents (tangent to the shell at the junction, level on the axis at the apex)
-//   and joined to its mirror image at the apex, a C1 joint; OCCT's single unconstrained fit of the
-//   whole meridian needs no joint — the hemisphere 8 against 7 at 10 and 1 µm (two quartic
-//   Béziers, the joint removed once, against one of degree 6), the 2:1 ellipsoid 14 against 13 and
-//   the 3:1 ellipsoid 16 against 15 at 10 µm; and the hemisphere 12 against SISL's best 10 at
-//   0.1 µm, where s1961's single fit of the whole meridian is again free of the apex joint.
+// points than the best peer fit, but for known misses, each held to its count: the 3-4-5
+// rise-return without dwells at 1 µm, 17 against OCCT's 15 (degree 8, 7 spans; a periodic spline
+// of degree p needs p + 1 spans). (The heads' misses went when a mirror-symmetric meridian became
+// one curve whose control values are mirror pairs, spline_space.h: the hemisphere 6 / 7 / 9
+// against the best peer's 7 / 7 / 10.)
 int exact_form_bound(const std::string& name, int i, int best) {
   static const std::map<std::pair<std::string, int>, int> known_misses = {
-      {{"345_no_dwell_roller", 1}, 17}, {{"hemispherical", 0}, 8},  {{"hemispherical", 1}, 8},
-      {{"ellipsoidal_2_1", 0}, 14},     {{"hemispherical", 2}, 12}, {{"ellipsoidal_3_1", 0}, 16}};
+      {{"345_no_dwell_roller", 1}, 17}};
   const auto miss = known_misses.find({name, i});
   return miss == known_misses.end() ? best : miss->second;
 }
