@@ -26,7 +26,8 @@ inline constexpr double kMinTolerance = 1e-9;
 // the knots of C but those at R's breakpoints (which stay exact arc junctions); by removing any
 // knot; by a refit — the least-squares B-spline of degree 3 to 6 with knots by need and the
 // fewest control points (degree_limited.h; periodic when R is closed; when R is open, fitted
-// piece by piece between R's breakpoints with R's end points and end tangents and joined there),
+// piece by piece between R's breakpoints with R's end points and end tangents and joined there,
+// the piece across a mirror-symmetric R's middle as its own mirror image),
 // measured against R, replacing C when it has fewer control points than C (any knot removed
 // otherwise).
 enum class Compaction { none, between_breakpoints, full, refit };
