@@ -53,8 +53,9 @@ ProfileError profile_error(const NurbsCurve2d& C, const PolarFunction& R, double
   out.at_angle = into_domain(R, psi);
   double d[2];
   R.derivatives(out.at_angle, 1, d);
-  // A radial offset δ moves the point by δ·R/√(R² + R'²) along the normal of r = R(ψ).
-  out.max_normal = m.value * std::abs(d[0]) / std::hypot(d[0], d[1]);
+  // A radial offset δ moves the point by δ·R/√(R² + R'²) along the normal of r = R(ψ) (the
+  // factor, at most 1, taken first so that round-off cannot lift it past δ).
+  out.max_normal = m.value * std::min(1.0, std::abs(d[0]) / std::hypot(d[0], d[1]));
   return out;
 }
 

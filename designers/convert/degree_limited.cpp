@@ -84,8 +84,9 @@ LimitedCurve measure(const SplineSpace& s, const PolarFunction& R, const Eigen::
             : std::clamp(psi, R.start, R.end);
   R.derivatives(psi, 1, d);
   out.max_radial_error = m.value;
-  // A radial offset δ moves the point by δ·R/√(R² + R'²) along the normal of r = R(ψ).
-  out.max_normal_error = m.value * std::abs(d[0]) / std::hypot(d[0], d[1]);
+  // A radial offset δ moves the point by δ·R/√(R² + R'²) along the normal of r = R(ψ) (the
+  // factor, at most 1, taken first so that round-off cannot lift it past δ).
+  out.max_normal_error = m.value * std::min(1.0, std::abs(d[0]) / std::hypot(d[0], d[1]));
   if (at) *at = m.at;
   return out;
 }

@@ -104,6 +104,14 @@ Eigen::MatrixXd solve(const SplineSpace& space, const std::vector<Sample>& ss,
         s.weight * (s.direction * s.direction.transpose() + slide * Eigen::Matrix2d::Identity());
     const Eigen::Vector2d Bp =
         s.weight * (s.direction * s.direction.dot(s.point) + slide * s.anchor);
+    if (!space.mirrored()) {  // the values in order (periodic: wrapping), none reflected
+      for (int j = 0; j <= p; ++j) {
+        const int J = space.value(s.first + j);
+        rhs.segment<2>(2 * J) += s.N[j] * Bp;
+        for (int k = j; k <= p; ++k) block(J, k - j) += (s.N[j] * s.N[k]) * B;
+      }
+      continue;
+    }
     int value[kMaxDegree + 1];
     bool reflected[kMaxDegree + 1];
     for (int j = 0; j <= p; ++j) {
@@ -112,11 +120,11 @@ Eigen::MatrixXd solve(const SplineSpace& space, const std::vector<Sample>& ss,
     }
     for (int j = 0; j <= p; ++j)
       for (int k = j; k <= p; ++k) {
-        Eigen::Matrix2d M = s.N[j] * s.N[k] * B;
+        Eigen::Matrix2d M = (s.N[j] * s.N[k]) * B;
         if (reflected[j]) M = S * M;
         if (reflected[k]) M = M * S;
-        // A mirrored space's values fold back past the middle: their order may turn.
-        const int d = space.periodic() ? k - j : value[k] - value[j];
+        // The values fold back past the middle: their order may turn.
+        const int d = value[k] - value[j];
         if (d > 0 || (d == 0 && j == k))
           block(value[j], d) += M;
         else if (d < 0)

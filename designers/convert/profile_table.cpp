@@ -18,7 +18,10 @@ ProfileTable::ProfileTable(const PolarFunction& R, int intervals)
     for (int k = 0; k < n; ++k) at_.push_back(fixed[s] + (fixed[s + 1] - fixed[s]) * k / n);
   }
   at_.push_back(end_);
-  nodes_.resize(at_.size());
+  struct Node {
+    double left[3], right[3];  // R, R', R'' from the interval before / after the node
+  };
+  std::vector<Node> nodes(at_.size());
   // Buckets of the nominal spacing: each holds at most a couple of nodes, so a lookup is a
   // division and a short scan.
   bucket_width_ = step;
@@ -32,15 +35,31 @@ ProfileTable::ProfileTable(const PolarFunction& R, int intervals)
     // The domain's ends and R's breakpoints: each side's derivatives from just inside it, taken
     // back to the node along the side's Taylor series.
     if (std::binary_search(fixed.begin(), fixed.end(), at_[i])) {
-      Node& n = nodes_[i];
+      Node& n = nodes[i];
       R.derivatives(std::max(at_[i] - nudge, start_), 2, n.left);
       R.derivatives(std::min(at_[i] + nudge, end_), 2, n.right);
       if (i > 0) n.left[0] += nudge * n.left[1], n.left[1] += nudge * n.left[2];
       if (i + 1 < at_.size()) n.right[0] -= nudge * n.right[1], n.right[1] -= nudge * n.right[2];
     } else {
-      R.derivatives(at_[i], 2, nodes_[i].left);
-      std::copy(nodes_[i].left, nodes_[i].left + 3, nodes_[i].right);
+      R.derivatives(at_[i], 2, nodes[i].left);
+      std::copy(nodes[i].left, nodes[i].left + 3, nodes[i].right);
     }
+  }
+  // The quintic Hermite interpolant of value, first and second derivative at both ends of each
+  // interval, in monomials of t: with A_k = h^k R^(k)(at_i+), B_k = h^k R^(k)(at_i+1−), the basis
+  // 1 − 10t³ + 15t⁴ − 6t⁵, t − 6t³ + 8t⁴ − 3t⁵, (t² − 3t³ + 3t⁴ − t⁵)/2 for A_0..A_2 and
+  // 10t³ − 15t⁴ + 6t⁵, −4t³ + 7t⁴ − 3t⁵, (t³ − 2t⁴ + t⁵)/2 for B_0..B_2.
+  for (std::size_t i = 0; i + 1 < at_.size(); ++i) {
+    const double h = at_[i + 1] - at_[i];
+    const double* r = nodes[i].right;
+    const double* l = nodes[i + 1].left;
+    const double A0 = r[0], A1 = h * r[1], A2 = h * h * r[2];
+    const double B0 = l[0], B1 = h * l[1], B2 = h * h * l[2];
+    intervals_.push_back(
+        {{A0, A1, 0.5 * A2, -10 * A0 - 6 * A1 - 1.5 * A2 + 10 * B0 - 4 * B1 + 0.5 * B2,
+          15 * A0 + 8 * A1 + 1.5 * A2 - 15 * B0 + 7 * B1 - B2,
+          -6 * A0 - 3 * A1 - 0.5 * A2 + 6 * B0 - 3 * B1 + 0.5 * B2},
+         h});
   }
 }
 
@@ -54,7 +73,6 @@ double ProfileTable::wrap(double psi) const {
   return std::clamp(psi, start_, end_);
 }
 
-// Quintic Hermite interpolation of value, first and second derivative at both ends.
 void ProfileTable::derivatives(double psi, double* out) const {
   psi = wrap(psi);
   const auto k = std::min(static_cast<std::size_t>(std::max((psi - start_) / bucket_width_, 0.0)),
@@ -62,22 +80,11 @@ void ProfileTable::derivatives(double psi, double* out) const {
   std::size_t i = bucket_[k];
   while (i + 2 < at_.size() && at_[i + 1] <= psi) ++i;
   i = std::min(i, at_.size() - 2);
-  const double h = at_[i + 1] - at_[i], t = (psi - at_[i]) / h;
-  const double* a = nodes_[i].right;
-  const double* b = nodes_[i + 1].left;
-  const double t2 = t * t, t3 = t2 * t, t4 = t3 * t, t5 = t4 * t;
-  // Basis of the quintic Hermite interpolant on [0, 1] and their derivatives.
-  const double h0 = 1 - 10 * t3 + 15 * t4 - 6 * t5, h1 = t - 6 * t3 + 8 * t4 - 3 * t5,
-               h2 = 0.5 * (t2 - 3 * t3 + 3 * t4 - t5), h5 = 10 * t3 - 15 * t4 + 6 * t5,
-               h4 = -4 * t3 + 7 * t4 - 3 * t5, h3 = 0.5 * (t3 - 2 * t4 + t5);
-  const double d0 = -30 * t2 + 60 * t3 - 30 * t4, d1 = 1 - 18 * t2 + 32 * t3 - 15 * t4,
-               d2 = 0.5 * (2 * t - 9 * t2 + 12 * t3 - 5 * t4), d5 = 30 * t2 - 60 * t3 + 30 * t4,
-               d4 = -12 * t2 + 28 * t3 - 15 * t4, d3 = 0.5 * (3 * t2 - 8 * t3 + 5 * t4);
-  out[0] =
-      h0 * a[0] + h * h1 * a[1] + h * h * h2 * a[2] + h5 * b[0] + h * h4 * b[1] + h * h * h3 * b[2];
-  out[1] = (d0 * a[0] + h * d1 * a[1] + h * h * d2 * a[2] + d5 * b[0] + h * d4 * b[1] +
-            h * h * d3 * b[2]) /
-           h;
+  const Interval& I = intervals_[i];
+  const double t = (psi - at_[i]) / I.h;
+  const double* c = I.c;
+  out[0] = c[0] + t * (c[1] + t * (c[2] + t * (c[3] + t * (c[4] + t * c[5]))));
+  out[1] = (c[1] + t * (2 * c[2] + t * (3 * c[3] + t * (4 * c[4] + t * 5 * c[5])))) / I.h;
 }
 
 }  // namespace polarform

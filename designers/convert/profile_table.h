@@ -25,13 +25,15 @@ class ProfileTable {
   double wrap(double psi) const;
 
  private:
-  struct Node {
-    double left[3], right[3];  // R, R', R'' from the interval before / after the node
+  // R on [at_i, at_i+1] as the quintic c_0 + c_1 t + ... + c_5 t^5 in t = (ψ − at_i)/h.
+  struct Interval {
+    double c[6];
+    double h;
   };
   double start_, end_;
   bool closed_;
   std::vector<double> at_;
-  std::vector<Node> nodes_;
+  std::vector<Interval> intervals_;
   double bucket_width_;
   std::vector<std::size_t> bucket_;  // index of the last node at or before each bucket's start
 };

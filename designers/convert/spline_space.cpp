@@ -40,11 +40,6 @@ int SplineSpace::basis(double t, double* N) const {
   return span - degree_;
 }
 
-int SplineSpace::value(int k) const {
-  if (periodic()) return k % size_;
-  return reflected(k) ? n_ - 1 - k : k;
-}
-
 Eigen::Vector2d SplineSpace::point(const Eigen::MatrixXd& coefs, double t) const {
   double N[kMaxDegree + 1];
   const int first = basis(t, N);

@@ -42,7 +42,7 @@ class SplineSpace {
   // among the curve's (the others follow): value(k + j) is its distinct control value, reflected
   // by reflection() when reflected(k + j).
   int basis(double t, double* N) const;
-  int value(int k) const;
+  int value(int k) const { return periodic() ? k % size_ : reflected(k) ? n_ - 1 - k : k; }
   bool reflected(int k) const { return mirrored() && 2 * k > n_ - 1; }
   const Eigen::Matrix2d& reflection() const { return reflection_; }
   // A mirrored space with an odd number of control values: the middle (distinct) one, which lies
