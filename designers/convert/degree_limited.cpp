@@ -101,9 +101,18 @@ struct Fit {
   double max = 0.0;
 };
 
-Fit fit_on(std::vector<double> breaks, Ends ends, const ProfileTable& table, int degree,
+// The shape every fit of one degree shares: how the curve ends, and a periodic one's seam knot's
+// multiplicity.
+struct Shape {
+  Ends ends = Ends::clamped;
+  int seam = 1;
+};
+
+Shape shape_of(const SplineSpace& s) { return {s.ends(), s.seam_multiplicity()}; }
+
+Fit fit_on(std::vector<double> breaks, Shape shape, const ProfileTable& table, int degree,
            const ProfileFitOptions& options, double accept) {
-  SplineSpace space(degree, ends, std::move(breaks));
+  SplineSpace space(degree, shape.ends, std::move(breaks), shape.seam);
   FittedProfile f = fit_profile(space, table, options);
   std::vector<double> errors = std::move(f.sample_errors);
   if (*std::max_element(errors.begin(), errors.end()) <= accept)
@@ -126,29 +135,43 @@ std::vector<double> need(const Fit& f) {
   return mass;
 }
 
+// Whether a derivative of order k (1..3) of R jumps between its values at `left` (just before a
+// point, by h) and at `right` (just after it), each taken back to the point along its Taylor
+// series.
+bool jumps(const PolarFunction& R, double left_at, double right_at, double h, int k) {
+  double left[4], right[4];
+  R.derivatives(left_at, 3, left);
+  R.derivatives(right_at, 3, right);
+  double scale = 0.0;
+  for (int i = 0; i <= 3; ++i) scale += std::abs(left[i]) + std::abs(right[i]);
+  const double l = left[k] + (k < 3 ? h * left[k + 1] : 0.0);
+  const double r = right[k] - (k < 3 ? h * right[k + 1] : 0.0);
+  return std::abs(l - r) > 1e-6 * scale;
+}
+
 // The breakpoints of R where a derivative of order 1..min(p, 3) jumps: there a knot lets the
 // spline follow the jump; elsewhere (a breakpoint of a smooth R) the knots are placed by need only.
 std::vector<double> jump_breakpoints(const PolarFunction& R, int p) {
   std::vector<double> out;
-  const int d = std::min(p, 3);
   const double h = 1e-9 * (R.end - R.start);
   for (double b : R.breakpoints) {
     if (!(b > R.start && b < R.end)) continue;
-    double left[4], right[4];
-    R.derivatives(b - h, 3, left);
-    R.derivatives(b + h, 3, right);
-    double scale = 0.0;
-    for (int k = 0; k <= 3; ++k) scale += std::abs(left[k]) + std::abs(right[k]);
-    bool jumps = false;
-    for (int k = 1; k <= d; ++k) {
-      // Each side's derivative taken back to b along its Taylor series.
-      const double l = left[k] + (k < 3 ? h * left[k + 1] : 0.0);
-      const double r = right[k] - (k < 3 ? h * right[k + 1] : 0.0);
-      jumps = jumps || std::abs(l - r) > 1e-6 * scale;
-    }
-    if (jumps) out.push_back(b);
+    bool any = false;
+    for (int k = 1; k <= std::min(p, 3); ++k) any = any || jumps(R, b - h, b + h, h, k);
+    if (any) out.push_back(b);
   }
   return out;
+}
+
+// A closed R's seam knot for degree p: of multiplicity p − (k − 1) where R's derivative of order
+// k <= 3 jumps across the seam (a cam whose first segment starts a rise at 0°), so that the curve
+// is as smooth there as R, C^(k−1), and no smoother: the clamped curve has as many control points
+// either way, and the constraints it sheds free the fit. Simple (C^(p−1)) where R is smooth.
+int seam_multiplicity(const PolarFunction& R, int p) {
+  const double h = 1e-9 * (R.end - R.start);
+  for (int k = 1; k <= 3; ++k)
+    if (jumps(R, R.end - h, R.start + h, h, k)) return std::clamp(p - (k - 1), 1, p);
+  return 1;
 }
 
 // Interpolation at `points` parameters equally spaced in ψ (the spans' ends for open curves).
@@ -198,7 +221,7 @@ void throw_if_stopped(const std::stop_token& stop) {
 // spans with the control points it predicts.
 struct Placement {
   int degree = 0;
-  Ends ends = Ends::clamped;
+  Shape shape;
   std::vector<double> fixed, breaks, mass;
   int spans = 0, fewest = 0;
   std::optional<Fit> minimax;
@@ -211,12 +234,14 @@ Placement place_knots(const PolarFunction& R, Ends ends, const ProfileTable& tab
                       double tol, const LimitedEffort& effort, const std::stop_token& stop) {
   Placement out;
   out.degree = p;
-  out.ends = ends;
+  out.shape = {ends, ends == Ends::periodic ? seam_multiplicity(R, p) : 1};
+  const Shape shape = out.shape;
   out.fixed = {R.start};
   for (double b : jump_breakpoints(R, p)) out.fixed.push_back(b);
   out.fixed.push_back(R.end);
-  out.fewest =
-      std::max<int>(ends == Ends::periodic ? p + 1 : 1, static_cast<int>(out.fixed.size()) - 1);
+  // A periodic space needs p + 1 control values: p + 2 − m spans.
+  out.fewest = std::max<int>(ends == Ends::periodic ? p + 2 - shape.seam : 1,
+                             static_cast<int>(out.fixed.size()) - 1);
   const ProfileFitOptions plain{2 * p + 2, kSlide, 0};
   // Knots by need: fits on breaks that equidistribute the last fit's measured error, sized for
   // the error of every span to meet kShare·tol if the error scales like h^(p+1).
@@ -226,7 +251,7 @@ Placement place_knots(const PolarFunction& R, Ends ends, const ProfileTable& tab
   // The rounds need each span's error roughly (its (p+1)-th root): the samples' suffice, but for
   // the last round's, which sizes and places every later fit.
   constexpr double kSamplesOnly = -1.0, kDense = std::numeric_limits<double>::infinity();
-  Fit f = fit_on(equidistribute(breaks, mass, static_cast<int>(mass.size()), out.fixed), ends,
+  Fit f = fit_on(equidistribute(breaks, mass, static_cast<int>(mass.size()), out.fixed), shape,
                  table, p, plain, kSamplesOnly);
   mass = need(f);
   for (int round = 0; round < effort.placement_rounds; ++round) {
@@ -237,7 +262,7 @@ Placement place_knots(const PolarFunction& R, Ends ends, const ProfileTable& tab
         equidistribute(f.space.breaks(), mass,
                        std::clamp<int>(static_cast<int>(std::min(n, 1e9)), out.fewest, kMaxSpans),
                        out.fixed),
-        ends, table, p, plain,
+        shape, table, p, plain,
         round + 1 == effort.placement_rounds || n >= kMaxSpans ? kDense : kSamplesOnly);
     mass = need(f);
     if (n >= kMaxSpans) break;  // the span budget decides (step 2)
@@ -246,7 +271,7 @@ Placement place_knots(const PolarFunction& R, Ends ends, const ProfileTable& tab
   out.mass = std::move(mass);
   out.spans = f.space.spans();
   throw_if_stopped(stop);
-  out.minimax = fit_on(equidistribute(out.breaks, out.mass, out.spans, out.fixed), ends, table, p,
+  out.minimax = fit_on(equidistribute(out.breaks, out.mass, out.spans, out.fixed), shape, table, p,
                        minimax_options(p, effort), kShare * tol);
   const double spans = std::max<double>(
       out.fewest, out.spans * std::pow(out.minimax->max / (kShare * tol), 1.0 / (p + 1)));
@@ -271,8 +296,8 @@ LimitedCurve fit_by_need(const PolarFunction& R, const ProfileTable& table, cons
   // does, then bisected.
   const auto try_spans = [&](int n) {
     throw_if_stopped(stop);
-    return fit_on(equidistribute(place.breaks, place.mass, n, fixed), place.ends, table, p, minimax,
-                  kShare * tol);
+    return fit_on(equidistribute(place.breaks, place.mass, n, fixed), place.shape, table, p,
+                  minimax, kShare * tol);
   };
   int hi = place.spans;
   Fit best = *place.minimax;  // try_spans(hi)
@@ -295,11 +320,11 @@ LimitedCurve fit_by_need(const PolarFunction& R, const ProfileTable& table, cons
   // for one fit, with Lawson's steps until they no longer gain when it misses by a little), then
   // the least needed interior breaks (those between the spans of smallest error), each removal
   // kept when the refit still meets the tolerance.
-  if (place.ends == Ends::mirrored) {
-    Fit c = fit_on(best.space.breaks(), Ends::mirrored_smooth, table, p, minimax, kShare * tol);
+  if (place.shape.ends == Ends::mirrored) {
+    const Shape smooth{Ends::mirrored_smooth};
+    Fit c = fit_on(best.space.breaks(), smooth, table, p, minimax, kShare * tol);
     if (c.max > kShare * tol && c.max <= kNearMiss * kShare * tol)
-      c = fit_on(best.space.breaks(), Ends::mirrored_smooth, table, p, converged_options(p),
-                 kShare * tol);
+      c = fit_on(best.space.breaks(), smooth, table, p, converged_options(p), kShare * tol);
     if (c.max <= kShare * tol) best = std::move(c);
   }
   {
@@ -315,7 +340,7 @@ LimitedCurve fit_by_need(const PolarFunction& R, const ProfileTable& table, cons
       std::vector<double> fewer = best.space.breaks();
       if (static_cast<int>(fewer.size()) - 2 < fewest) break;
       fewer.erase(std::find(fewer.begin(), fewer.end(), at));
-      Fit c = fit_on(std::move(fewer), best.space.ends(), table, p, minimax, kShare * tol);
+      Fit c = fit_on(std::move(fewer), shape_of(best.space), table, p, minimax, kShare * tol);
       if (c.max <= kShare * tol) best = std::move(c);
     }
   }
@@ -344,7 +369,7 @@ LimitedCurve fit_by_need(const PolarFunction& R, const ProfileTable& table, cons
     // A miss that splitting cannot reach (a fold the fit keeps) ends before round-off does.
     if (!(b[j + 1] - b[j] > kMinSpan * (R.end - R.start))) throw fail();
     b.insert(b.begin() + static_cast<std::ptrdiff_t>(j) + 1, 0.5 * (b[j] + b[j + 1]));
-    best = fit_on(std::move(b), best.space.ends(), table, p, minimax, kShare * tol);
+    best = fit_on(std::move(b), shape_of(best.space), table, p, minimax, kShare * tol);
   }
 }
 

@@ -34,17 +34,18 @@ struct LimitedEffort {
 };
 
 struct LimitedCurve {
-  NurbsCurve2d curve;           // clamped; closed (C^{p-1} at the seam) when R is closed
+  NurbsCurve2d curve;           // clamped; closed when R is (C^{p-1} at the seam, or as R there)
   double max_radial_error = 0;  // mm, measured against R (or its table: verify_on_table)
   double max_normal_error = 0;  // mm
   int control_points = 0;
 };
 
-// A tolerance-driven least-squares B-spline with knots placed by need (periodic, C^{p-1} across
-// the seam, when R is closed; an open one keeps R's end points): knots equidistributing the
-// measured error (de Boor), a knot wherever a derivative of order <= min(p, 3) of R jumps, the
-// fewest spans on that density whose minimax fit meets tol, knot removal by refit, then the
-// result measured against R itself (a span split where it misses). The fits let the curve slide
+// A tolerance-driven least-squares B-spline with knots placed by need (periodic when R is closed,
+// C^{p-1} across the seam, or C^{k-1} where R's derivative of order k <= 3 jumps there; an open
+// one keeps R's end points): knots equidistributing the measured error (de Boor), a knot wherever
+// a derivative of order <= min(p, 3) of R jumps, the fewest spans on that density whose minimax
+// fit meets tol, knot removal by refit, then the result measured against R itself (a span split
+// where it misses). The fits let the curve slide
 // along the profile and are pushed toward the minimax radial error (profile_fit.h). A
 // mirror-symmetric R (polar_function.h) is fitted as its own mirror image (Mirror::at_end on its
 // first half). Throws NumericalError if 20000 spans do not reach tol.

@@ -8,16 +8,27 @@
 
 namespace polarform {
 
-SplineSpace::SplineSpace(int degree, Ends ends, std::vector<double> breaks)
-    : degree_(degree), ends_(ends), breaks_(std::move(breaks)) {
+SplineSpace::SplineSpace(int degree, Ends ends, std::vector<double> breaks, int seam_multiplicity)
+    : degree_(degree), ends_(ends), seam_(seam_multiplicity), breaks_(std::move(breaks)) {
   const int k = spans();
-  if (k < 1 || (periodic() && k < degree_ + 1))
+  if (seam_ < 1 || seam_ > std::max(1, degree_) || (seam_ > 1 && !periodic()))
+    throw InputError("spline space: seam multiplicity " + std::to_string(seam_) + " for degree " +
+                     std::to_string(degree_));
+  if (k < 1 || (periodic() && k + seam_ - 1 < degree_ + 1))
     throw InputError("spline space: too few spans for degree " + std::to_string(degree_));
   const double a = breaks_.front(), b = breaks_.back();
   std::vector<double> interior(breaks_.begin() + 1, breaks_.end() - 1);
   if (periodic()) {
-    knots_ = periodic_knots(degree_, breaks_);
-    size_ = k;
+    // One period's knots T_0..T_{K−1} (a m times, then the interior breaks), continued by the
+    // period on both sides: U_i = T_{i mod K} + (b − a)·⌊i / K⌋ for i = −p..K + p (Bae 2002,
+    // eq. 3.9 with a multiple seam knot). K control values, wrapping.
+    std::vector<double> T(static_cast<std::size_t>(seam_), a);
+    T.insert(T.end(), interior.begin(), interior.end());
+    size_ = static_cast<int>(T.size());
+    for (int i = -degree_; i <= size_ + degree_; ++i) {
+      const int q = (i % size_ + size_) % size_;
+      knots_.push_back(T[static_cast<std::size_t>(q)] + (b - a) * ((i - q) / size_));
+    }
   } else if (!mirrored()) {
     knots_ = clamped_knots(degree_, a, b, interior);
     size_ = k + degree_;
@@ -50,9 +61,8 @@ Eigen::Vector2d SplineSpace::point(const Eigen::MatrixXd& coefs, double t) const
 }
 
 NurbsCurve2d SplineSpace::curve(const Eigen::MatrixXd& coefs) const {
-  const BSpline plain =
-      periodic() ? clip(periodic_bspline(degree_, breaks_, coefs), breaks_.front(), breaks_.back())
-                 : BSpline(degree_, knots_, mirrored() ? unfolded(coefs) : coefs);
+  const BSpline all(degree_, knots_, ends_ == Ends::clamped ? coefs : unfolded(coefs));
+  const BSpline plain = periodic() ? clip(all, breaks_.front(), breaks_.back()) : all;
   Eigen::MatrixXd h(3, plain.size());
   h.topRows(2) = plain.coefs();
   h.row(2).setOnes();

@@ -1,6 +1,7 @@
 // The spline space of a degree-limited profile: a planar B-spline of degree p on the breaks
 // b_0 = a < ... < b_k = b (simple interior knots), clamped, periodic (control values wrap,
-// C^{p-1} across b / a; Bae 2002, eq. 3.9-3.10), or mirrored: continued past b as its own mirror
+// C^{p-1} across b / a, Bae 2002, eq. 3.9-3.10, or C^{p-m} with a seam knot of multiplicity m),
+// or mirrored: continued past b as its own mirror
 // image in the line through the origin at polar angle b, its control values tied in mirror pairs
 // (a vessel head's meridian, mirrored in its axis). Evaluates from its distinct control values and
 // turns them into the clamped curve that is exported.
@@ -26,11 +27,13 @@ enum class Ends {
 
 class SplineSpace {
  public:
-  // breaks: increasing, at least 2 (periodic: at least degree + 1 spans).
-  SplineSpace(int degree, Ends ends, std::vector<double> breaks);
+  // breaks: increasing, at least 2 (periodic: at least degree + 2 − seam_multiplicity spans);
+  // seam_multiplicity: of a periodic space's knot at a (and b), 1..degree.
+  SplineSpace(int degree, Ends ends, std::vector<double> breaks, int seam_multiplicity = 1);
 
   int degree() const { return degree_; }
   Ends ends() const { return ends_; }
+  int seam_multiplicity() const { return seam_; }
   bool periodic() const { return ends_ == Ends::periodic; }
   bool mirrored() const { return ends_ == Ends::mirrored || ends_ == Ends::mirrored_smooth; }
   // Of [a, b], where the fits sample and measure (a mirrored curve's other half is the image).
@@ -55,11 +58,12 @@ class SplineSpace {
   NurbsCurve2d curve(const Eigen::MatrixXd& coefs) const;
 
  private:
-  // A mirrored space's N control values from its distinct ones.
+  // The curve's N control values from the distinct ones (a periodic space's before clipping).
   Eigen::MatrixXd unfolded(const Eigen::MatrixXd& coefs) const;
 
   int degree_;
   Ends ends_;
+  int seam_;
   std::vector<double> breaks_;
   Knots knots_;
   int size_, n_;  // distinct control values; the curve's (periodic: of its unclipped knots)

@@ -7,6 +7,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+
+#include "src/nurbs/periodic.h"
 
 namespace polarform {
 namespace {
@@ -61,6 +64,38 @@ TEST(SplineSpace, MirroredValuesFoldBackPastTheMiddle) {
     EXPECT_EQ(s.reflected(k), k > 3) << k;
   }
   EXPECT_TRUE(s.middle_on_mirror_line());
+}
+
+// A periodic space with a seam knot of multiplicity m: k + m − 1 distinct control values, the
+// clamped curve's k + p, and C^(p−m) across the seam; with m = 1 the curve is Bae's periodic
+// B-spline (eq. 3.9-3.10) clipped to [a, b].
+TEST(SplineSpace, APeriodicSpacesSeamKnotSetsItsContinuityThere) {
+  const std::vector<double> breaks = {0.0, 1.0, 2.5, 4.0, 5.0, 5.7, 2 * std::numbers::pi};
+  for (int p : {3, 4, 5})
+    for (int m = 1; m <= p; ++m) {
+      SCOPED_TRACE("degree " + std::to_string(p) + ", seam multiplicity " + std::to_string(m));
+      const SplineSpace s(p, Ends::periodic, breaks, m);
+      ASSERT_EQ(s.size(), 6 + m - 1);
+      Eigen::MatrixXd coefs(2, s.size());
+      for (int j = 0; j < s.size(); ++j)
+        coefs.col(j) = Eigen::Vector2d(40 * std::cos(1.1 * j) + 3 * j, 30 * std::sin(0.7 * j));
+      const NurbsCurve2d C = s.curve(coefs);
+      EXPECT_EQ(C.size(), 6 + p);
+      const auto start = C.derivatives(C.front(), p), end = C.derivatives(C.back(), p);
+      for (int k = 0; k <= p - m; ++k)
+        EXPECT_LE((start[k] - end[k]).norm(), 1e-9 * std::max(1.0, start[k].norm())) << k;
+      EXPECT_GT((start[p - m + 1] - end[p - m + 1]).norm(), 1e-3) << p - m + 1;
+      for (int i = 0; i <= 50; ++i) {
+        const double t = breaks.back() * i / 50;
+        EXPECT_NEAR((s.point(coefs, t) - C(t)).norm(), 0.0, 1e-9);
+        if (m == 1) {
+          const BSpline bae = clip(periodic_bspline(p, breaks, coefs), 0.0, breaks.back());
+          double xy[2];
+          bae.point(t, xy);
+          EXPECT_NEAR((C(t) - Eigen::Vector2d(xy[0], xy[1])).norm(), 0.0, 1e-9);
+        }
+      }
+    }
 }
 
 TEST(SplineSpace, ClampedAndPeriodicSpacesKeepTheirCounts) {

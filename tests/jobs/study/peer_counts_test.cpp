@@ -267,14 +267,13 @@ int best_cubic_peer(const std::string& name, int i) {
 }
 
 // The exact form (the product refitted, as plate cams and vessel heads export it): no more control
-// points than the best peer fit, but for known misses, each held to its count: the 3-4-5
-// rise-return without dwells at 1 µm, 17 against OCCT's 15 (degree 8, 7 spans; a periodic spline
-// of degree p needs p + 1 spans). (The heads' misses went when a mirror-symmetric meridian became
-// one curve whose control values are mirror pairs, spline_space.h: the hemisphere 6 / 7 / 9
-// against the best peer's 7 / 7 / 10.)
+// points than the best peer fit, but for known misses, each held to its count (none now: the
+// heads' went when a mirror-symmetric meridian became one curve whose control values are mirror
+// pairs, spline_space.h, the hemisphere 8 / 8 / 12 -> 6 / 7 / 9 against the best peer's 7 / 7 / 10;
+// the 3-4-5 rise-return without dwells at 1 µm, 17 against OCCT's 15, when a seam where R's third
+// derivative jumps became C2 like R instead of C^(p-1), degree_limited.h: 15 at degree 5).
 int exact_form_bound(const std::string& name, int i, int best) {
-  static const std::map<std::pair<std::string, int>, int> known_misses = {
-      {{"345_no_dwell_roller", 1}, 17}};
+  static const std::map<std::pair<std::string, int>, int> known_misses = {};
   const auto miss = known_misses.find({name, i});
   return miss == known_misses.end() ? best : miss->second;
 }
