@@ -101,18 +101,18 @@ struct Fit {
   double max = 0.0;
 };
 
-// The shape every fit of one degree shares: how the curve ends, and a periodic one's seam knot's
-// multiplicity.
+// The shape every fit of one degree shares: how the curve ends, and its knots that are not
+// simple.
 struct Shape {
   Ends ends = Ends::clamped;
-  int seam = 1;
+  Multiplicities multiple;
 };
 
-Shape shape_of(const SplineSpace& s) { return {s.ends(), s.seam_multiplicity()}; }
+Shape shape_of(const SplineSpace& s) { return {s.ends(), s.multiplicities()}; }
 
 Fit fit_on(std::vector<double> breaks, Shape shape, const ProfileTable& table, int degree,
            const ProfileFitOptions& options, double accept) {
-  SplineSpace space(degree, shape.ends, std::move(breaks), shape.seam);
+  SplineSpace space(degree, shape.ends, std::move(breaks), shape.multiple);
   FittedProfile f = fit_profile(space, table, options);
   std::vector<double> errors = std::move(f.sample_errors);
   if (*std::max_element(errors.begin(), errors.end()) <= accept)
@@ -135,43 +135,39 @@ std::vector<double> need(const Fit& f) {
   return mass;
 }
 
-// Whether a derivative of order k (1..3) of R jumps between its values at `left` (just before a
-// point, by h) and at `right` (just after it), each taken back to the point along its Taylor
-// series.
-bool jumps(const PolarFunction& R, double left_at, double right_at, double h, int k) {
+// The lowest order k (1..3) of R's derivatives that jumps between their values at `left_at` (just
+// before a point, by h) and at `right_at` (just after it), each taken back to the point along its
+// Taylor series; 0 if none does.
+int jump_order(const PolarFunction& R, double left_at, double right_at, double h) {
   double left[4], right[4];
   R.derivatives(left_at, 3, left);
   R.derivatives(right_at, 3, right);
   double scale = 0.0;
   for (int i = 0; i <= 3; ++i) scale += std::abs(left[i]) + std::abs(right[i]);
-  const double l = left[k] + (k < 3 ? h * left[k + 1] : 0.0);
-  const double r = right[k] - (k < 3 ? h * right[k + 1] : 0.0);
-  return std::abs(l - r) > 1e-6 * scale;
+  for (int k = 1; k <= 3; ++k) {
+    const double l = left[k] + (k < 3 ? h * left[k + 1] : 0.0);
+    const double r = right[k] - (k < 3 ? h * right[k + 1] : 0.0);
+    if (std::abs(l - r) > 1e-6 * scale) return k;
+  }
+  return 0;
 }
 
-// The breakpoints of R where a derivative of order 1..min(p, 3) jumps: there a knot lets the
-// spline follow the jump; elsewhere (a breakpoint of a smooth R) the knots are placed by need only.
-std::vector<double> jump_breakpoints(const PolarFunction& R, int p) {
-  std::vector<double> out;
+// The multiplicity of a degree-p knot that leaves the spline C^(k−1) where R's k-th derivative
+// jumps (k >= 1), as smooth as R there; simple where R is smooth (k = 0).
+int multiplicity_for(int k, int p) { return k == 0 ? 1 : std::clamp(p - (k - 1), 1, p); }
+
+// The breakpoints of R where a derivative of order 1..min(p, 3) jumps, with that order: there a
+// knot lets the spline follow the jump; elsewhere (a breakpoint of a smooth R) the knots are placed
+// by need only.
+std::vector<std::pair<double, int>> jump_breakpoints(const PolarFunction& R, int p) {
+  std::vector<std::pair<double, int>> out;
   const double h = 1e-9 * (R.end - R.start);
   for (double b : R.breakpoints) {
     if (!(b > R.start && b < R.end)) continue;
-    bool any = false;
-    for (int k = 1; k <= std::min(p, 3); ++k) any = any || jumps(R, b - h, b + h, h, k);
-    if (any) out.push_back(b);
+    const int k = jump_order(R, b - h, b + h, h);
+    if (k > 0 && k <= std::min(p, 3)) out.emplace_back(b, k);
   }
   return out;
-}
-
-// A closed R's seam knot for degree p: of multiplicity p − (k − 1) where R's derivative of order
-// k <= 3 jumps across the seam (a cam whose first segment starts a rise at 0°), so that the curve
-// is as smooth there as R, C^(k−1), and no smoother: the clamped curve has as many control points
-// either way, and the constraints it sheds free the fit. Simple (C^(p−1)) where R is smooth.
-int seam_multiplicity(const PolarFunction& R, int p) {
-  const double h = 1e-9 * (R.end - R.start);
-  for (int k = 1; k <= 3; ++k)
-    if (jumps(R, R.end - h, R.start + h, h, k)) return std::clamp(p - (k - 1), 1, p);
-  return 1;
 }
 
 // Interpolation at `points` parameters equally spaced in ψ (the spans' ends for open curves).
@@ -223,7 +219,7 @@ struct Placement {
   int degree = 0;
   Shape shape;
   std::vector<double> fixed, breaks, mass;
-  int spans = 0, fewest = 0;
+  int spans = 0, fewest = 0, extra = 0;
   std::optional<Fit> minimax;
   // Of the clamped curve, if the minimax error scales like h^(p+1): the plain fits that placed
   // the knots miss the minimax fit's gain, which differs from degree to degree.
@@ -234,13 +230,26 @@ Placement place_knots(const PolarFunction& R, Ends ends, const ProfileTable& tab
                       double tol, const LimitedEffort& effort, const std::stop_token& stop) {
   Placement out;
   out.degree = p;
-  out.shape = {ends, ends == Ends::periodic ? seam_multiplicity(R, p) : 1};
-  const Shape shape = out.shape;
+  out.shape.ends = ends;
+  // A closed R's seam knot as smooth as R there (a cam whose first segment starts a rise at 0°
+  // has a jump in R‴ or R″): the clamped curve has p + spans control points whatever the seam's
+  // multiplicity, and the constraints it sheds free the fit.
+  const double h = 1e-9 * (R.end - R.start);
+  if (ends == Ends::periodic)
+    out.shape.multiple.seam = multiplicity_for(jump_order(R, R.end - h, R.start + h, h), p);
   out.fixed = {R.start};
-  for (double b : jump_breakpoints(R, p)) out.fixed.push_back(b);
+  for (const auto& [b, k] : jump_breakpoints(R, p)) {
+    out.fixed.push_back(b);
+    out.shape.multiple.interior.emplace_back(b, multiplicity_for(k, p));
+  }
   out.fixed.push_back(R.end);
-  // A periodic space needs p + 1 control values: p + 2 − m spans.
-  out.fewest = std::max<int>(ends == Ends::periodic ? p + 2 - shape.seam : 1,
+  const Shape& shape = out.shape;
+  // The knots' multiplicities beyond one: control points that do not come with spans.
+  int extra = 0;
+  for (const auto& [b, m] : shape.multiple.interior) extra += m - 1;
+  out.extra = extra;
+  // A periodic space needs p + 1 control values: p + 2 − seam − extra spans.
+  out.fewest = std::max<int>(ends == Ends::periodic ? p + 2 - shape.multiple.seam - extra : 1,
                              static_cast<int>(out.fixed.size()) - 1);
   const ProfileFitOptions plain{2 * p + 2, kSlide, 0};
   // Knots by need: fits on breaks that equidistribute the last fit's measured error, sized for
@@ -276,7 +285,8 @@ Placement place_knots(const PolarFunction& R, Ends ends, const ProfileTable& tab
   const double spans = std::max<double>(
       out.fewest, out.spans * std::pow(out.minimax->max / (kShare * tol), 1.0 / (p + 1)));
   // A mirrored curve has the mirror images of the spans too, but for the one across the line.
-  out.predicted_control_points = p + (ends == Ends::mirrored ? 2 * spans - 1 : spans);
+  out.predicted_control_points =
+      p + (ends == Ends::mirrored ? 2 * (spans + extra) - 1 : spans + extra);
   return out;
 }
 
@@ -321,7 +331,7 @@ LimitedCurve fit_by_need(const PolarFunction& R, const ProfileTable& table, cons
   // the least needed interior breaks (those between the spans of smallest error), each removal
   // kept when the refit still meets the tolerance.
   if (place.shape.ends == Ends::mirrored) {
-    const Shape smooth{Ends::mirrored_smooth};
+    const Shape smooth{Ends::mirrored_smooth, place.shape.multiple};
     Fit c = fit_on(best.space.breaks(), smooth, table, p, minimax, kShare * tol);
     if (c.max > kShare * tol && c.max <= kNearMiss * kShare * tol)
       c = fit_on(best.space.breaks(), smooth, table, p, converged_options(p), kShare * tol);

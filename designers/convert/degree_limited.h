@@ -43,10 +43,10 @@ struct LimitedCurve {
 // A tolerance-driven least-squares B-spline with knots placed by need (periodic when R is closed,
 // C^{p-1} across the seam, or C^{k-1} where R's derivative of order k <= 3 jumps there; an open
 // one keeps R's end points): knots equidistributing the measured error (de Boor), a knot wherever
-// a derivative of order <= min(p, 3) of R jumps, the fewest spans on that density whose minimax
-// fit meets tol, knot removal by refit, then the result measured against R itself (a span split
-// where it misses). The fits let the curve slide
-// along the profile and are pushed toward the minimax radial error (profile_fit.h). A
+// a derivative of order k <= min(p, 3) of R jumps (of multiplicity p − (k − 1): C^(k−1) there, as
+// R is), the fewest spans on that density whose minimax fit meets tol, knot removal by refit,
+// then the result measured against R itself (a span split where it misses). The fits let the curve
+// slide along the profile and are pushed toward the minimax radial error (profile_fit.h). A
 // mirror-symmetric R (polar_function.h) is fitted as its own mirror image (Mirror::at_end on its
 // first half). Throws NumericalError if 20000 spans do not reach tol.
 LimitedCurve approximate_polar_curve(const PolarFunction& R, int degree, double tol,

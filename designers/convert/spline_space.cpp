@@ -8,22 +8,34 @@
 
 namespace polarform {
 
-SplineSpace::SplineSpace(int degree, Ends ends, std::vector<double> breaks, int seam_multiplicity)
-    : degree_(degree), ends_(ends), seam_(seam_multiplicity), breaks_(std::move(breaks)) {
+SplineSpace::SplineSpace(int degree, Ends ends, std::vector<double> breaks, Multiplicities multiple)
+    : degree_(degree), ends_(ends), multiple_(std::move(multiple)), breaks_(std::move(breaks)) {
   const int k = spans();
-  if (seam_ < 1 || seam_ > std::max(1, degree_) || (seam_ > 1 && !periodic()))
-    throw InputError("spline space: seam multiplicity " + std::to_string(seam_) + " for degree " +
-                     std::to_string(degree_));
-  if (k < 1 || (periodic() && k + seam_ - 1 < degree_ + 1))
-    throw InputError("spline space: too few spans for degree " + std::to_string(degree_));
+  const auto bad = [&](int m) { return m < 1 || m > std::max(1, degree_); };
+  if (bad(multiple_.seam) || (multiple_.seam > 1 && !periodic()))
+    throw InputError("spline space: seam multiplicity " + std::to_string(multiple_.seam) +
+                     " for degree " + std::to_string(degree_));
+  if (k < 1) throw InputError("spline space: no span");
   const double a = breaks_.front(), b = breaks_.back();
-  std::vector<double> interior(breaks_.begin() + 1, breaks_.end() - 1);
+  // The interior breaks, each as often as its multiplicity.
+  std::vector<double> interior;
+  auto m = multiple_.interior.begin();
+  for (std::size_t i = 1; i + 1 < breaks_.size(); ++i) {
+    while (m != multiple_.interior.end() && m->first < breaks_[i]) ++m;
+    const int times = m != multiple_.interior.end() && m->first == breaks_[i] ? m->second : 1;
+    if (bad(times))
+      throw InputError("spline space: knot multiplicity " + std::to_string(times) + " for degree " +
+                       std::to_string(degree_));
+    interior.insert(interior.end(), static_cast<std::size_t>(times), breaks_[i]);
+  }
   if (periodic()) {
-    // One period's knots T_0..T_{K−1} (a m times, then the interior breaks), continued by the
+    // One period's knots T_0..T_{K−1} (a m times, then the interior ones), continued by the
     // period on both sides: U_i = T_{i mod K} + (b − a)·⌊i / K⌋ for i = −p..K + p (Bae 2002,
-    // eq. 3.9 with a multiple seam knot). K control values, wrapping.
-    std::vector<double> T(static_cast<std::size_t>(seam_), a);
+    // eq. 3.9 with multiple knots). K control values, wrapping.
+    std::vector<double> T(static_cast<std::size_t>(multiple_.seam), a);
     T.insert(T.end(), interior.begin(), interior.end());
+    if (static_cast<int>(T.size()) < degree_ + 1)
+      throw InputError("spline space: too few spans for degree " + std::to_string(degree_));
     size_ = static_cast<int>(T.size());
     for (int i = -degree_; i <= size_ + degree_; ++i) {
       const int q = (i % size_ + size_) % size_;
@@ -31,11 +43,11 @@ SplineSpace::SplineSpace(int degree, Ends ends, std::vector<double> breaks, int 
     }
   } else if (!mirrored()) {
     knots_ = clamped_knots(degree_, a, b, interior);
-    size_ = k + degree_;
+    size_ = static_cast<int>(interior.size()) + 1 + degree_;
   } else {
+    const std::size_t half = interior.size();
     if (ends_ == Ends::mirrored) interior.push_back(b);
-    for (int i = k - 1; i >= 1; --i)
-      interior.push_back(2 * b - breaks_[static_cast<std::size_t>(i)]);
+    for (std::size_t i = half; i-- > 0;) interior.push_back(2 * b - interior[i]);
     knots_ = clamped_knots(degree_, a, 2 * b - a, interior);
     const int n = static_cast<int>(interior.size()) + 1 + degree_;
     size_ = (n + 1) / 2;

@@ -1,7 +1,7 @@
 // The spline space of a degree-limited profile: a planar B-spline of degree p on the breaks
-// b_0 = a < ... < b_k = b (simple interior knots), clamped, periodic (control values wrap,
-// C^{p-1} across b / a, Bae 2002, eq. 3.9-3.10, or C^{p-m} with a seam knot of multiplicity m),
-// or mirrored: continued past b as its own mirror
+// b_0 = a < ... < b_k = b (interior knots simple, or of a given multiplicity m: C^{p-m} there),
+// clamped, periodic (control values wrap, C^{p-1} across b / a, Bae 2002, eq. 3.9-3.10, or
+// C^{p-m} with a seam knot of multiplicity m), or mirrored: continued past b as its own mirror
 // image in the line through the origin at polar angle b, its control values tied in mirror pairs
 // (a vessel head's meridian, mirrored in its axis). Evaluates from its distinct control values and
 // turns them into the clamped curve that is exported.
@@ -25,15 +25,22 @@ enum class Ends {
   mirrored_smooth,
 };
 
+// The knots of a space that are not simple, each of multiplicity 1..p: a periodic space's seam
+// (C^{p-m} across b / a) and interior breaks (sorted by the break, which must be one of the
+// space's; a mirrored space's images of them alike).
+struct Multiplicities {
+  int seam = 1;
+  std::vector<std::pair<double, int>> interior;
+};
+
 class SplineSpace {
  public:
-  // breaks: increasing, at least 2 (periodic: at least degree + 2 − seam_multiplicity spans);
-  // seam_multiplicity: of a periodic space's knot at a (and b), 1..degree.
-  SplineSpace(int degree, Ends ends, std::vector<double> breaks, int seam_multiplicity = 1);
+  // breaks: increasing, at least 2 (periodic: enough for p + 1 distinct control values).
+  SplineSpace(int degree, Ends ends, std::vector<double> breaks, Multiplicities multiple = {});
 
   int degree() const { return degree_; }
   Ends ends() const { return ends_; }
-  int seam_multiplicity() const { return seam_; }
+  const Multiplicities& multiplicities() const { return multiple_; }
   bool periodic() const { return ends_ == Ends::periodic; }
   bool mirrored() const { return ends_ == Ends::mirrored || ends_ == Ends::mirrored_smooth; }
   // Of [a, b], where the fits sample and measure (a mirrored curve's other half is the image).
@@ -63,7 +70,7 @@ class SplineSpace {
 
   int degree_;
   Ends ends_;
-  int seam_;
+  Multiplicities multiple_;
   std::vector<double> breaks_;
   Knots knots_;
   int size_, n_;  // distinct control values; the curve's (periodic: of its unclipped knots)

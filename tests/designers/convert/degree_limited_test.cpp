@@ -153,6 +153,8 @@ TEST(DegreeLimited, KnotsByNeedBeatTheUniformSplineThroughPoints) {
     }
 }
 
+// A jump of R's third derivative is a knot of multiplicity p − 2, where the curve is C2 as R is
+// (and its third derivative jumps too); a breakpoint where R is smooth need not be a knot.
 TEST(DegreeLimited, AJumpOfTheThirdDerivativeIsAKnotAPlainBreakpointNeedNotBe) {
   // r = 50 + 2|sin ψ|³, closed: C2, its third derivative jumps (−12 to 12) at ψ = π; the
   // breakpoint listed at ψ = 1 is smooth.
@@ -167,15 +169,26 @@ TEST(DegreeLimited, AJumpOfTheThirdDerivativeIsAKnotAPlainBreakpointNeedNotBe) {
                            2 * sigma * (6 * c * c * c - 21 * s * s * c)};
     for (int k = 0; k <= d; ++k) out[k] = all[k];
   };
-  const LimitedCurve c = approximate_polar_curve(R, 3, 1e-4);
-  EXPECT_LE(dense_distance(c.curve, R), 1e-4);
-  bool at_pi = false, at_one = false;
-  for (const Breakpoint& k : breakpoints(c.curve.knots())) {
-    at_pi = at_pi || k.value == std::numbers::pi;
-    at_one = at_one || k.value == 1.0;
+  for (int p : {3, 4, 5}) {
+    SCOPED_TRACE("degree " + std::to_string(p));
+    const LimitedCurve c = approximate_polar_curve(R, p, 1e-4);
+    EXPECT_LE(dense_distance(c.curve, R), 1e-4);
+    int at_pi = 0;
+    bool at_one = false;
+    for (const Breakpoint& k : breakpoints(c.curve.knots())) {
+      if (k.value == std::numbers::pi) at_pi = k.multiplicity;
+      at_one = at_one || k.value == 1.0;
+    }
+    EXPECT_EQ(at_pi, std::max(1, p - 2));
+    EXPECT_FALSE(at_one);
+    if (p >= 4) {
+      const double h = 1e-9;
+      const auto left = c.curve.derivatives(std::numbers::pi - h, 3);
+      const auto right = c.curve.derivatives(std::numbers::pi + h, 3);
+      EXPECT_LE((left[2] - right[2]).norm(), 1e-4 * left[2].norm());
+      EXPECT_GT((left[3] - right[3]).norm(), 1.0);  // R‴ jumps by 24
+    }
   }
-  EXPECT_TRUE(at_pi);
-  EXPECT_FALSE(at_one);
 }
 
 TEST(DegreeLimited, FewestControlPointsIsTheBestDegreesFitWhateverTheThreadsDo) {

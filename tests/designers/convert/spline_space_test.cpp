@@ -74,7 +74,7 @@ TEST(SplineSpace, APeriodicSpacesSeamKnotSetsItsContinuityThere) {
   for (int p : {3, 4, 5})
     for (int m = 1; m <= p; ++m) {
       SCOPED_TRACE("degree " + std::to_string(p) + ", seam multiplicity " + std::to_string(m));
-      const SplineSpace s(p, Ends::periodic, breaks, m);
+      const SplineSpace s(p, Ends::periodic, breaks, {.seam = m, .interior = {}});
       ASSERT_EQ(s.size(), 6 + m - 1);
       Eigen::MatrixXd coefs(2, s.size());
       for (int j = 0; j < s.size(); ++j)
@@ -96,6 +96,41 @@ TEST(SplineSpace, APeriodicSpacesSeamKnotSetsItsContinuityThere) {
         }
       }
     }
+}
+
+// An interior knot of multiplicity m: m − 1 more control values, C^(p−m) there; in a mirrored
+// space at the break's mirror image too.
+TEST(SplineSpace, AnInteriorKnotsMultiplicitySetsItsContinuityThere) {
+  const std::vector<double> breaks = {0.1, 0.4, 0.9, 1.2};
+  for (Ends ends : {Ends::clamped, Ends::periodic, Ends::mirrored})
+    for (int p : {3, 5})
+      for (int m = 1; m <= p; ++m) {
+        SCOPED_TRACE("ends " + std::to_string(static_cast<int>(ends)) + ", degree " +
+                     std::to_string(p) + ", multiplicity " + std::to_string(m));
+        const std::vector<double> b =
+            ends == Ends::periodic ? std::vector<double>{0.0, 0.4, 0.9, 2.0, 3.0, 4.0, 5.0, 6.0}
+                                   : breaks;
+        const SplineSpace s(p, ends, b, {1, {{0.4, m}}});
+        const Eigen::MatrixXd coefs = values_of(s);
+        const NurbsCurve2d C = s.curve(coefs);
+        const int spans = ends == Ends::mirrored ? 6 : static_cast<int>(b.size()) - 1;
+        const int extra = (ends == Ends::mirrored ? 2 : 1) * (m - 1);
+        EXPECT_EQ(C.size(), spans + p + extra);
+        const std::vector<double> at = ends == Ends::mirrored
+                                           ? std::vector<double>{0.4, 2 * 1.2 - 0.4}
+                                           : std::vector<double>{0.4};
+        for (double u : at) {
+          const double h = 1e-9;
+          const auto left = C.derivatives(u - h, p), right = C.derivatives(u + h, p);
+          for (int k = 0; k <= p - m; ++k)
+            EXPECT_LE((left[k] - right[k]).norm(), 1e-5 * std::max(1.0, left[k].norm())) << k;
+          EXPECT_GT((left[p - m + 1] - right[p - m + 1]).norm(), 1e-3) << p - m + 1;
+        }
+        for (int i = 0; i <= 50; ++i) {
+          const double t = b.front() + (b.back() - b.front()) * i / 50;
+          EXPECT_NEAR((s.point(coefs, t) - C(t)).norm(), 0.0, 1e-9);
+        }
+      }
 }
 
 TEST(SplineSpace, ClampedAndPeriodicSpacesKeepTheirCounts) {
