@@ -27,9 +27,10 @@ constexpr std::size_t kMaxArcs = 2000;
 // their derivatives, 6 on near-circular heads, 3 where the others fold) and its effort: a coarser
 // table of R than the export's and half its Lawson steps (together < 1 % more control points),
 // two degrees fitted to the end. Measured on the 66 rows of tests/jobs/study/peer_counts_test.cpp
-// (before heads were mirrored, which took the total from 1580 to 1538): 1607 control points in
-// all, against 1779 with 6 placement rounds and 3 knot removals, which took 115 M instructions
-// against 211 M (callgrind, the whole BM_RollerCamConversion1um run).
+// (before heads were mirrored and knots made as smooth as R, which took the total from 1580 to
+// 1420): 1607 control points in all, against 1779 with 6 placement rounds and 3 knot removals,
+// which took 115 M instructions against 211 M (callgrind, the whole BM_RollerCamConversion1um
+// run).
 const std::vector<int> kRefitDegrees = {3, 4, 5, 6};
 constexpr LimitedEffort kRefitEffort = {512, 30, 4, 20, 2};
 

@@ -84,7 +84,7 @@ void ConversionPanel::draw_result(const PolarConversion* c, int degree, int cont
   row("degree",
       std::to_string(degree) + (c->curve.is_rational() ? " (rational)" : " (polynomial)"));
   row("control points", std::to_string(control_points));
-  std::string steps;  // the conversion's steps, e.g. "product 110 → refit 25"
+  std::string steps;  // the conversion's steps, e.g. "product 110 → refit 22"
   for (const ConversionStep& step : c->steps)
     steps += (steps.empty() ? "" : " → ") + step.name + " " + std::to_string(step.control_points);
   row("steps", steps);
