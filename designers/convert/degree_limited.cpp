@@ -219,7 +219,7 @@ struct Placement {
   int degree = 0;
   Shape shape;
   std::vector<double> fixed, breaks, mass;
-  int spans = 0, fewest = 0, extra = 0;
+  int spans = 0, fewest = 0;
   std::optional<Fit> minimax;
   // Of the clamped curve, if the minimax error scales like h^(p+1): the plain fits that placed
   // the knots miss the minimax fit's gain, which differs from degree to degree.
@@ -247,7 +247,6 @@ Placement place_knots(const PolarFunction& R, Ends ends, const ProfileTable& tab
   // The knots' multiplicities beyond one: control points that do not come with spans.
   int extra = 0;
   for (const auto& [b, m] : shape.multiple.interior) extra += m - 1;
-  out.extra = extra;
   // A periodic space needs p + 1 control values: p + 2 − seam − extra spans.
   out.fewest = std::max<int>(ends == Ends::periodic ? p + 2 - shape.multiple.seam - extra : 1,
                              static_cast<int>(out.fixed.size()) - 1);

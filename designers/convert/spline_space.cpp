@@ -29,18 +29,14 @@ SplineSpace::SplineSpace(int degree, Ends ends, std::vector<double> breaks, Mult
     interior.insert(interior.end(), static_cast<std::size_t>(times), breaks_[i]);
   }
   if (periodic()) {
-    // One period's knots T_0..T_{K−1} (a m times, then the interior ones), continued by the
-    // period on both sides: U_i = T_{i mod K} + (b − a)·⌊i / K⌋ for i = −p..K + p (Bae 2002,
-    // eq. 3.9 with multiple knots). K control values, wrapping.
+    // One period's knots (a as often as the seam's multiplicity, then the interior ones), K
+    // control values, wrapping.
     std::vector<double> T(static_cast<std::size_t>(multiple_.seam), a);
     T.insert(T.end(), interior.begin(), interior.end());
     if (static_cast<int>(T.size()) < degree_ + 1)
       throw InputError("spline space: too few spans for degree " + std::to_string(degree_));
+    knots_ = periodic_knots(degree_, T, b);
     size_ = static_cast<int>(T.size());
-    for (int i = -degree_; i <= size_ + degree_; ++i) {
-      const int q = (i % size_ + size_) % size_;
-      knots_.push_back(T[static_cast<std::size_t>(q)] + (b - a) * ((i - q) / size_));
-    }
   } else if (!mirrored()) {
     knots_ = clamped_knots(degree_, a, b, interior);
     size_ = static_cast<int>(interior.size()) + 1 + degree_;

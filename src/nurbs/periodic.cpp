@@ -13,9 +13,6 @@ namespace polarform {
 
 // Bae 2002, eq. (3.9).
 Knots periodic_knots(int degree, const std::vector<double>& breaks) {
-  if (degree < 0 || degree > kMaxDegree)
-    throw InputError("periodic_knots: degree " + std::to_string(degree) + " outside [0, " +
-                     std::to_string(kMaxDegree) + "]");
   const int k = static_cast<int>(breaks.size()) - 1;
   if (k < 1)
     throw InputError("periodic_knots: " + std::to_string(breaks.size()) +
@@ -24,12 +21,35 @@ Knots periodic_knots(int degree, const std::vector<double>& breaks) {
     if (!(breaks[i] > breaks[i - 1]) || !std::isfinite(breaks[i]) || !std::isfinite(breaks[0]))
       throw InputError("periodic_knots: breaks not finite and strictly increasing at index " +
                        std::to_string(i));
-  const double period = breaks[k] - breaks[0];
-  // Knot i (of -degree..k+degree) is knot i -/+ k shifted by one period: the spacings repeat.
-  Knots out(k + 1 + 2 * degree);
-  std::copy(breaks.begin(), breaks.end(), out.begin() + degree);
-  for (int i = k + 1; i <= k + degree; ++i) out[degree + i] = out[degree + i - k] + period;
-  for (int i = -1; i >= -degree; --i) out[degree + i] = out[degree + i + k] - period;
+  return periodic_knots(degree, std::vector<double>(breaks.begin(), breaks.end() - 1), breaks[k]);
+}
+
+Knots periodic_knots(int degree, const std::vector<double>& period_knots, double end) {
+  if (degree < 0 || degree > kMaxDegree)
+    throw InputError("periodic_knots: degree " + std::to_string(degree) + " outside [0, " +
+                     std::to_string(kMaxDegree) + "]");
+  const int K = static_cast<int>(period_knots.size());
+  if (K < 1) throw InputError("periodic_knots: no knot in the period");
+  int run = 1;
+  for (int i = 0; i < K; ++i) {
+    const double t = period_knots[static_cast<std::size_t>(i)];
+    if (!std::isfinite(t) || !(t < end) || (i > 0 && !(t >= period_knots[i - 1])))
+      throw InputError(
+          "periodic_knots: period knots not finite, non-decreasing and below the end "
+          "at index " +
+          std::to_string(i));
+    run = i > 0 && t == period_knots[i - 1] ? run + 1 : 1;
+    if (run > std::max(1, degree))
+      throw InputError("periodic_knots: knot " + to_text(t) + " repeated more than the degree");
+  }
+  if (!std::isfinite(end)) throw InputError("periodic_knots: the period's end is not finite");
+  const double period = end - period_knots.front();
+  Knots out;
+  out.reserve(static_cast<std::size_t>(K + 2 * degree + 1));
+  for (int i = -degree; i <= K + degree; ++i) {
+    const int q = (i % K + K) % K;
+    out.push_back(period_knots[static_cast<std::size_t>(q)] + period * ((i - q) / K));
+  }
   return out;
 }
 

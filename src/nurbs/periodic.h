@@ -16,6 +16,12 @@ namespace polarform {
 // followed by `degree` knots that repeat the spacings periodically (period b_k - b_0), eq. (3.9).
 Knots periodic_knots(int degree, const std::vector<double>& breaks);
 
+// The same with multiple knots: one period's knots T_0 = v_s <= T_1 <= ... <= T_{K-1} < v_e = end
+// (K >= 1; a value repeated m <= degree times is a knot of multiplicity m, T_0 repeated the seam's,
+// C^{degree-m} across v_s / v_e), continued by the period: U_i = T_{i mod K} + (v_e − v_s)·⌊i/K⌋
+// for i = −degree..K + degree, eq. (3.9). K distinct control values.
+Knots periodic_knots(int degree, const std::vector<double>& period_knots, double end);
+
 // The closed B-spline on periodic_knots(degree, breaks) with the k columns of coefs as its distinct
 // control values and the first `degree` of them repeated at the end, eq. (3.10): C^{degree-1}
 // across v_s / v_e.

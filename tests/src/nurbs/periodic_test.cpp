@@ -18,6 +18,18 @@ TEST(Periodic, KnotVectorClosedForm) {
   EXPECT_THROW(periodic_knots(2, {0.0, 1.0, 1.0}), InputError);
 }
 
+// One period's knots with repeats: the seam knot 0 twice and 3 twice, continued by the period 6;
+// simple knots give the breaks' vector.
+TEST(Periodic, KnotVectorWithMultipleKnots) {
+  EXPECT_EQ(periodic_knots(3, {0, 0, 1, 3, 3}, 6.0),
+            (Knots{-5, -3, -3, 0, 0, 1, 3, 3, 6, 6, 7, 9}));
+  EXPECT_EQ(periodic_knots(3, {0, 1, 3}, 6.0), periodic_knots(3, {0, 1, 3, 6}));
+  EXPECT_THROW(periodic_knots(2, {0.0, 0.0, 0.0, 1.0}, 2.0), InputError);  // 3 > degree
+  EXPECT_THROW(periodic_knots(2, {0.0, 2.0}, 2.0), InputError);            // not below the end
+  EXPECT_THROW(periodic_knots(2, {1.0, 0.5}, 2.0), InputError);            // decreasing
+  EXPECT_THROW(periodic_knots(2, {}, 2.0), InputError);
+}
+
 TEST(Periodic, SeamIsCpMinusOne) {
   std::mt19937 rng(51);
   std::uniform_real_distribution<double> gap(0.2, 1.0);
