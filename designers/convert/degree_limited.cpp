@@ -250,31 +250,40 @@ Placement place_knots(const PolarFunction& R, Ends ends, const ProfileTable& tab
   // A periodic space needs p + 1 control values: p + 2 − seam − extra spans.
   out.fewest = std::max<int>(ends == Ends::periodic ? p + 2 - shape.multiple.seam - extra : 1,
                              static_cast<int>(out.fixed.size()) - 1);
+
   const ProfileFitOptions plain{2 * p + 2, kSlide, 0};
   // Knots by need: fits on breaks that equidistribute the last fit's measured error, sized for
   // the error of every span to meet kShare·tol if the error scales like h^(p+1).
   std::vector<double> breaks = uniform_breaks(R.start, R.end, std::max(16, 2 * out.fewest));
   std::vector<double> mass;
   for (std::size_t j = 0; j + 1 < breaks.size(); ++j) mass.push_back(breaks[j + 1] - breaks[j]);
-  // The rounds need each span's error roughly (its (p+1)-th root): the samples' suffice, but for
-  // the last round's, which sizes and places every later fit.
-  constexpr double kSamplesOnly = -1.0, kDense = std::numeric_limits<double>::infinity();
+  // The rounds need each span's error roughly (its (p+1)-th root): the samples' suffice.
+  constexpr double kSamplesOnly = -1.0;
   Fit f = fit_on(equidistribute(breaks, mass, static_cast<int>(mass.size()), out.fixed), shape,
                  table, p, plain, kSamplesOnly);
-  mass = need(f);
+  // The rounds wander rather than converge (the spans a round asks for rise and fall by a few),
+  // so the round whose spans, scaled as if its error went like h^(p+1), are the fewest is kept.
+  const auto asks = [&](const Fit& g) {
+    return g.space.spans() * std::pow(g.max / (kShare * tol), 1.0 / (p + 1));
+  };
+  Fit kept = f;
   for (int round = 0; round < effort.placement_rounds; ++round) {
     throw_if_stopped(stop);
+    mass = need(f);
     const double total = std::accumulate(mass.begin(), mass.end(), 0.0);
     const double n = std::ceil(total / std::pow(kShare * tol, 1.0 / (p + 1)));
     f = fit_on(
         equidistribute(f.space.breaks(), mass,
                        std::clamp<int>(static_cast<int>(std::min(n, 1e9)), out.fewest, kMaxSpans),
                        out.fixed),
-        shape, table, p, plain,
-        round + 1 == effort.placement_rounds || n >= kMaxSpans ? kDense : kSamplesOnly);
-    mass = need(f);
+        shape, table, p, plain, kSamplesOnly);
+    if (asks(f) < asks(kept)) kept = f;
     if (n >= kMaxSpans) break;  // the span budget decides (step 2)
   }
+  // The kept round's span errors measured densely: they size and place every later fit.
+  f = std::move(kept);
+  f.errors = span_errors(f.space, f.coefs, table, 2 * plain.per_span);
+  mass = need(f);
   out.breaks = f.space.breaks();
   out.mass = std::move(mass);
   out.spans = f.space.spans();
@@ -295,6 +304,10 @@ LimitedCurve fit_by_need(const PolarFunction& R, const ProfileTable& table, cons
   const int p = place.degree, fewest = place.fewest;
   const std::vector<double>& fixed = place.fixed;
   const ProfileFitOptions minimax = minimax_options(p, effort);
+  // The fits that are kept only if they meet the tolerance: no Lawson steps spent on a hopeless
+  // one.
+  ProfileFitOptions trial = minimax;
+  trial.target = kShare * tol;
   const auto fail = [&] {
     return NumericalError("degree-limited profile: no degree-" + std::to_string(p) +
                           " spline with up to " + std::to_string(kMaxSpans) + " spans meets " +
@@ -305,8 +318,8 @@ LimitedCurve fit_by_need(const PolarFunction& R, const ProfileTable& table, cons
   // does, then bisected.
   const auto try_spans = [&](int n) {
     throw_if_stopped(stop);
-    return fit_on(equidistribute(place.breaks, place.mass, n, fixed), place.shape, table, p,
-                  minimax, kShare * tol);
+    return fit_on(equidistribute(place.breaks, place.mass, n, fixed), place.shape, table, p, trial,
+                  kShare * tol);
   };
   int hi = place.spans;
   Fit best = *place.minimax;  // try_spans(hi)
@@ -328,14 +341,18 @@ LimitedCurve fit_by_need(const PolarFunction& R, const ProfileTable& table, cons
   // 3. Knot removal by refit: a mirrored curve's knot on the mirror line first (one control point
   // for one fit, with Lawson's steps until they no longer gain when it misses by a little), then
   // the least needed interior breaks (those between the spans of smallest error), each removal
-  // kept when the refit still meets the tolerance.
-  if (place.shape.ends == Ends::mirrored) {
+  // kept when the refit still meets the tolerance, then the mirror line's knot again if it stayed
+  // (fewer spans elsewhere may let it go). The trial fits give up their Lawson steps early when
+  // they are far off (ProfileFitOptions::target).
+  const auto remove_mirror_knot = [&] {
+    if (best.space.ends() != Ends::mirrored) return;
     const Shape smooth{Ends::mirrored_smooth, place.shape.multiple};
-    Fit c = fit_on(best.space.breaks(), smooth, table, p, minimax, kShare * tol);
+    Fit c = fit_on(best.space.breaks(), smooth, table, p, trial, kShare * tol);
     if (c.max > kShare * tol && c.max <= kNearMiss * kShare * tol)
       c = fit_on(best.space.breaks(), smooth, table, p, converged_options(p), kShare * tol);
     if (c.max <= kShare * tol) best = std::move(c);
-  }
+  };
+  remove_mirror_knot();
   {
     std::vector<std::pair<double, double>> order;  // (larger neighbouring span error, break)
     const std::vector<double>& b = best.space.breaks();
@@ -349,10 +366,11 @@ LimitedCurve fit_by_need(const PolarFunction& R, const ProfileTable& table, cons
       std::vector<double> fewer = best.space.breaks();
       if (static_cast<int>(fewer.size()) - 2 < fewest) break;
       fewer.erase(std::find(fewer.begin(), fewer.end(), at));
-      Fit c = fit_on(std::move(fewer), shape_of(best.space), table, p, minimax, kShare * tol);
+      Fit c = fit_on(std::move(fewer), shape_of(best.space), table, p, trial, kShare * tol);
       if (c.max <= kShare * tol) best = std::move(c);
     }
   }
+  remove_mirror_knot();
 
   // 4. Verified against R itself (or its table); where it misses, the span of the largest error
   // is split (greedy insertion) and the minimax fit repeated.
@@ -432,13 +450,20 @@ LimitedCurve fewest_control_points(const PolarFunction& R, const std::vector<int
            (a.predicted_control_points == b.predicted_control_points && a.degree < b.degree);
   });
   // Then the minimax fits in the order of the control points the placements predict, as many at
-  // a time (each on its own thread) as are still wanted, until `finalists` have met the tolerance.
+  // a time (each on its own thread) as are still wanted, until `finalists` have met the tolerance,
+  // then one at a time while the next predicts fewer control points than the best result (the
+  // predictions err by a few control points, which decides between degrees on small curves: a
+  // head's single sextic).
   std::optional<LimitedCurve> best;
   std::optional<NumericalError> failure;
   std::size_t fitted = 0, next = 0;
-  while (fitted < effort.finalists && next < places.size()) {
+  const auto promising = [&](std::size_t k) {
+    return best && places[k].predicted_control_points < best->control_points;
+  };
+  while (next < places.size() && (fitted < effort.finalists || promising(next))) {
     std::vector<std::future<LimitedCurve>> fitting;
-    for (std::size_t k = next; k < std::min(places.size(), next + effort.finalists - fitted); ++k)
+    const std::size_t batch = fitted < effort.finalists ? effort.finalists - fitted : 1;
+    for (std::size_t k = next; k < std::min(places.size(), next + batch); ++k)
       fitting.push_back(std::async(std::launch::async, [&, k] {
         return fit_by_need(R, table, places[k], tol, effort, stop);
       }));

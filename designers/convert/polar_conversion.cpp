@@ -25,14 +25,13 @@ namespace {
 constexpr std::size_t kMaxArcs = 2000;
 // The refit's degrees (the fewest control points wins: 4 and 5 on cam profiles with jumps in
 // their derivatives, 6 on near-circular heads, 3 where the others fold) and its effort: a coarser
-// table of R than the export's and half its Lawson steps (together < 1 % more control points),
-// two degrees fitted to the end. Measured on the 66 rows of tests/jobs/study/peer_counts_test.cpp
-// (before heads were mirrored and knots made as smooth as R, which took the total from 1580 to
-// 1420): 1607 control points in all, against 1779 with 6 placement rounds and 3 knot removals,
-// which took 115 M instructions against 211 M (callgrind, the whole BM_RollerCamConversion1um
-// run).
+// table of R than the export's, half its Lawson steps and a third of its placement rounds, two
+// degrees fitted to the end. Measured on the 66 rows of tests/jobs/study/peer_counts_test.cpp:
+// 10 placement rounds give the same 1418 control points in all as 30, and take 125 M
+// instructions against 153 M (callgrind, the whole BM_RollerCamConversion1um run, about 30 M of
+// it the program's start).
 const std::vector<int> kRefitDegrees = {3, 4, 5, 6};
-constexpr LimitedEffort kRefitEffort = {512, 30, 4, 20, 2};
+constexpr LimitedEffort kRefitEffort = {512, 10, 4, 20, 2};
 
 // Measures every arc of C; returns the indices of the arcs over the tolerance.
 std::vector<int> measure_arcs(const NurbsCurve2d& C, const PolarFunction& R,

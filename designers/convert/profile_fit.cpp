@@ -14,12 +14,32 @@ namespace {
 
 struct Sample {
   double t;
+  Eigen::Vector2d radial;            // the unit vector at polar angle t
   Eigen::Vector2d point, direction;  // radial error ≈ direction · (C(t) − point)
   Eigen::Vector2d anchor;            // where the full-distance share pulls C(t)
   int first;
+  int first_value;  // unmirrored spaces: the distinct control value of N[0], the others following
   double N[kMaxDegree + 1];
   double weight = 1.0;
 };
+
+// The distinct control value `first_value + j` of an unmirrored space (periodic: wrapped once).
+int following(int first_value, int j, int n) {
+  const int J = first_value + j;
+  return J < n ? J : J - n;
+}
+
+// The polar angle of c measured from the unit vector e, in (−π, π]: atan2 of c's components
+// along e and across it, by its Taylor series where that is small (|y/x| < 0.05: the series' next
+// term is below 5e-16 of it), as it is for a curve point near its sample's angle.
+double angle_from(const Eigen::Vector2d& c, const Eigen::Vector2d& e) {
+  const double x = e.dot(c), y = e.x() * c.y() - e.y() * c.x();
+  if (x > 0 && std::abs(y) < 0.05 * x) {
+    const double r = y / x, r2 = r * r;
+    return r * (1 - r2 * (1.0 / 3 - r2 * (1.0 / 5 - r2 * (1.0 / 7 - r2 * (1.0 / 9)))));
+  }
+  return std::atan2(y, x);
+}
 
 // A control value held on a line or at a point: x = value + Q·y with the components `held` of y
 // zero. An open (clamped) curve's end points are the profile's, so that the curve, free to slide
@@ -76,11 +96,13 @@ std::vector<Sample> samples(const SplineSpace& space, const ProfileTable& R, int
       double d[2];
       R.derivatives(s.t, d);
       const Eigen::Vector2d er(std::cos(s.t), std::sin(s.t)), et(-er.y(), er.x());
+      s.radial = er;
       s.point = d[0] * er;
       // ρ moves by e_r·δ and ψ by e_θ·δ / R, so |ρ − R(ψ)| by (e_r − R'/R e_θ)·δ.
       s.direction = er - d[1] / d[0] * et;
       s.anchor = s.point;
       s.first = space.basis(s.t, s.N);
+      s.first_value = space.value(s.first);
       out.push_back(s);
     }
   return out;
@@ -106,9 +128,10 @@ Eigen::MatrixXd solve(const SplineSpace& space, const std::vector<Sample>& ss,
         s.weight * (s.direction * s.direction.dot(s.point) + slide * s.anchor);
     if (!space.mirrored()) {  // the values in order (periodic: wrapping), none reflected
       for (int j = 0; j <= p; ++j) {
-        const int J = space.value(s.first + j);
+        const int J = following(s.first_value, j, n);
         rhs.segment<2>(2 * J) += s.N[j] * Bp;
-        for (int k = j; k <= p; ++k) block(J, k - j) += (s.N[j] * s.N[k]) * B;
+        Eigen::Matrix2d* row = &block(J, 0);
+        for (int k = j; k <= p; ++k) row[k - j] += (s.N[j] * s.N[k]) * B;
       }
       continue;
     }
@@ -189,6 +212,11 @@ Eigen::MatrixXd solve(const SplineSpace& space, const std::vector<Sample>& ss,
 Eigen::Vector2d curve_point(const Sample& s, const Eigen::MatrixXd& coefs,
                             const SplineSpace& space) {
   Eigen::Vector2d c = Eigen::Vector2d::Zero(), reflected = Eigen::Vector2d::Zero();
+  if (!space.mirrored()) {
+    for (int j = 0; j <= space.degree(); ++j)
+      c += s.N[j] * coefs.col(following(s.first_value, j, space.size()));
+    return c;
+  }
   for (int j = 0; j <= space.degree(); ++j)
     (space.reflected(s.first + j) ? reflected : c) += s.N[j] * coefs.col(space.value(s.first + j));
   return c + space.reflection() * reflected;
@@ -200,7 +228,7 @@ Eigen::Vector2d curve_point(const Sample& s, const Eigen::MatrixXd& coefs,
 double relinearise(Sample& s, const Eigen::Vector2d& c, const ProfileTable& R) {
   const double rho = c.norm();
   double d[2];
-  R.derivatives(polar_angle_near(c.x(), c.y(), s.t), d);
+  R.derivatives(s.t + angle_from(c, s.radial), d);
   const Eigen::Vector2d er = c / rho, et(-er.y(), er.x());  // at c's polar angle
   const double f = rho - d[0];
   s.direction = er - d[1] / rho * et;
@@ -237,6 +265,7 @@ FittedProfile fit_profile(const SplineSpace& space, const ProfileTable& R,
       }
     }
     if (step == options.lawson_steps || worst == 0.0) break;
+    if (step > 0 && worst > options.target * (1.0 + 3.0 / step)) break;  // hopeless
     if (!options.reweight) continue;
     for (std::size_t i = 0; i < ss.size(); ++i) sum += ss[i].weight * r[i];
     const double mean = sum / static_cast<double>(ss.size());
