@@ -35,6 +35,7 @@ class BorderedBandCholesky {
   int size_, w_, m_, n_;        // n_ = size − m: the banded part's order
   std::vector<double> band_;    // row i: A(i, i − w .. i) of the banded part, then L
   std::vector<double> border_;  // row r: A(n_ + r, 0 .. size − 1), then L
+  std::vector<double> inverse_diagonal_;  // 1 / L(i, i), after factorize()
 };
 
 }  // namespace polarform

@@ -1,6 +1,7 @@
 #include "designers/convert/polar_conversion.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <future>
 #include <optional>
@@ -33,14 +34,27 @@ constexpr std::size_t kMaxArcs = 2000;
 const std::vector<int> kRefitDegrees = {3, 4, 5, 6};
 constexpr LimitedEffort kRefitEffort = {512, 10, 4, 20, 2};
 
-// Measures every arc of C; returns the indices of the arcs over the tolerance.
+// Measures every arc of C; returns the indices of the arcs over the tolerance. `both_cores`: a
+// second thread takes arcs too (for the refit, measured when nothing else runs).
 std::vector<int> measure_arcs(const NurbsCurve2d& C, const PolarFunction& R,
-                              const std::vector<double>& breaks, PolarConversion& out) {
+                              const std::vector<double>& breaks, PolarConversion& out,
+                              bool both_cores = false) {
+  const std::size_t arcs = breaks.size() - 1;
+  std::vector<ProfileError> errors(arcs);
+  std::atomic<std::size_t> next{0};
+  const auto measure = [&] {
+    for (std::size_t j; (j = next++) < arcs;)
+      errors[j] = profile_error(C, R, breaks[j], breaks[j + 1]);
+  };
+  std::future<void> helper;
+  if (both_cores && arcs > 1) helper = std::async(std::launch::async, measure);
+  measure();
+  if (helper.valid()) helper.get();
   std::vector<int> failing;
   out.arcs.clear();
   out.max_radial_error = out.max_normal_error = 0.0;
-  for (std::size_t j = 0; j + 1 < breaks.size(); ++j) {
-    const ProfileError e = profile_error(C, R, breaks[j], breaks[j + 1]);
+  for (std::size_t j = 0; j < arcs; ++j) {
+    const ProfileError& e = errors[j];
     out.arcs.push_back({breaks[j], breaks[j + 1] - breaks[j], e.max_radial});
     if (e.max_radial > out.max_radial_error) {
       out.max_radial_error = e.max_radial;
@@ -124,7 +138,7 @@ bool refit(const PolarFunction& R, const std::vector<double>& breaks,
     if (!r || r->control_points >= out.curve.size()) return false;
     PolarConversion refitted = out;
     refitted.curve = std::move(r->curve);
-    if (measure_arcs(refitted.curve, R, breaks, refitted).empty()) {
+    if (measure_arcs(refitted.curve, R, breaks, refitted, true).empty()) {
       out = std::move(refitted);
       return true;
     }

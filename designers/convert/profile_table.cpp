@@ -1,7 +1,9 @@
 #include "designers/convert/profile_table.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <future>
 #include <numbers>
 
 namespace polarform {
@@ -24,14 +26,14 @@ ProfileTable::ProfileTable(const PolarFunction& R, int intervals)
   std::vector<Node> nodes(at_.size());
   // Buckets of the nominal spacing: each holds at most a couple of nodes, so a lookup is a
   // division and a short scan.
-  bucket_width_ = step;
+  inverse_bucket_width_ = 1 / step;
   for (int k = 0; k <= intervals; ++k) {
     const double x = start_ + k * step;
     const auto it = std::upper_bound(at_.begin(), at_.end(), x);
     bucket_.push_back(static_cast<std::size_t>(std::max<std::ptrdiff_t>(it - at_.begin() - 1, 0)));
   }
   const double nudge = 1e-9 * (end_ - start_);
-  for (std::size_t i = 0; i < at_.size(); ++i) {
+  const auto evaluate = [&](std::size_t i) {
     // The domain's ends and R's breakpoints: each side's derivatives from just inside it, taken
     // back to the node along the side's Taylor series.
     if (std::binary_search(fixed.begin(), fixed.end(), at_[i])) {
@@ -44,7 +46,18 @@ ProfileTable::ProfileTable(const PolarFunction& R, int intervals)
       R.derivatives(at_[i], 2, nodes[i].left);
       std::copy(nodes[i].left, nodes[i].left + 3, nodes[i].right);
     }
-  }
+  };
+  // R is costly (a cam contour's envelope): the nodes in chunks, on two threads.
+  constexpr std::size_t kChunk = 64;
+  std::atomic<std::size_t> next{0};
+  const auto work = [&] {
+    for (std::size_t c; (c = next.fetch_add(kChunk)) < at_.size();)
+      for (std::size_t i = c; i < std::min(c + kChunk, at_.size()); ++i) evaluate(i);
+  };
+  std::future<void> helper;
+  if (at_.size() > 2 * kChunk) helper = std::async(std::launch::async, work);
+  work();
+  if (helper.valid()) helper.get();
   // The quintic Hermite interpolant of value, first and second derivative at both ends of each
   // interval, in monomials of t: with A_k = h^k R^(k)(at_i+), B_k = h^k R^(k)(at_i+1−), the basis
   // 1 − 10t³ + 15t⁴ − 6t⁵, t − 6t³ + 8t⁴ − 3t⁵, (t² − 3t³ + 3t⁴ − t⁵)/2 for A_0..A_2 and
@@ -59,7 +72,7 @@ ProfileTable::ProfileTable(const PolarFunction& R, int intervals)
         {{A0, A1, 0.5 * A2, -10 * A0 - 6 * A1 - 1.5 * A2 + 10 * B0 - 4 * B1 + 0.5 * B2,
           15 * A0 + 8 * A1 + 1.5 * A2 - 15 * B0 + 7 * B1 - B2,
           -6 * A0 - 3 * A1 - 0.5 * A2 + 6 * B0 - 3 * B1 + 0.5 * B2},
-         h});
+         1 / h});
   }
 }
 
@@ -75,16 +88,18 @@ double ProfileTable::wrap(double psi) const {
 
 void ProfileTable::derivatives(double psi, double* out) const {
   psi = wrap(psi);
-  const auto k = std::min(static_cast<std::size_t>(std::max((psi - start_) / bucket_width_, 0.0)),
-                          bucket_.size() - 1);
+  const auto k =
+      std::min(static_cast<std::size_t>(std::max((psi - start_) * inverse_bucket_width_, 0.0)),
+               bucket_.size() - 1);
   std::size_t i = bucket_[k];
+  while (i > 0 && at_[i] > psi) --i;  // k rounded up past a bucket's start
   while (i + 2 < at_.size() && at_[i + 1] <= psi) ++i;
   i = std::min(i, at_.size() - 2);
   const Interval& I = intervals_[i];
-  const double t = (psi - at_[i]) / I.h;
+  const double t = (psi - at_[i]) * I.inverse_h;
   const double* c = I.c;
   out[0] = c[0] + t * (c[1] + t * (c[2] + t * (c[3] + t * (c[4] + t * c[5]))));
-  out[1] = (c[1] + t * (2 * c[2] + t * (3 * c[3] + t * (4 * c[4] + t * 5 * c[5])))) / I.h;
+  out[1] = (c[1] + t * (2 * c[2] + t * (3 * c[3] + t * (4 * c[4] + t * 5 * c[5])))) * I.inverse_h;
 }
 
 }  // namespace polarform

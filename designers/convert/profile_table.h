@@ -13,6 +13,8 @@ namespace polarform {
 
 class ProfileTable {
  public:
+  // R's nodes are evaluated on two threads: R's derivatives must be safe to call concurrently
+  // (every PolarFunction's are: pure functions of immutable data).
   explicit ProfileTable(const PolarFunction& R, int intervals = 4096);
 
   // R(ψ) and R'(ψ) into out[0..1]; ψ wrapped into the domain (closed) or clamped to it (open).
@@ -28,13 +30,13 @@ class ProfileTable {
   // R on [at_i, at_i+1] as the quintic c_0 + c_1 t + ... + c_5 t^5 in t = (ψ − at_i)/h.
   struct Interval {
     double c[6];
-    double h;
+    double inverse_h;  // 1/h, so that a lookup has no division
   };
   double start_, end_;
   bool closed_;
   std::vector<double> at_;
   std::vector<Interval> intervals_;
-  double bucket_width_;
+  double inverse_bucket_width_;
   std::vector<std::size_t> bucket_;  // index of the last node at or before each bucket's start
 };
 
