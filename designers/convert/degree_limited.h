@@ -18,8 +18,9 @@ namespace polarform {
 // are the degree-limited export's; the converter's refit (polar_conversion.h) runs leaner.
 struct LimitedEffort {
   int table_intervals = 4096;  // ProfileTable's
-  // Rounds of knot placement on plain fits (one solve each): the equidistribution converges
-  // slowly, 30 rounds give about 4 % fewer control points than 6 on the examples.
+  // Rounds of knot placement on plain fits (one solve each): the equidistribution wanders rather
+  // than converges and the best round is kept; at degree 3 on the 66 peer_counts rows, 30 rounds
+  // give 1971 control points in all against 2022 with 10.
   int placement_rounds = 30;
   int lawson_steps = 8;  // of each minimax fit (more gain little)
   // Knot removals tried by refit (about 1 in 5 succeeds): 20 give about 6 % fewer control points
