@@ -31,7 +31,7 @@ int following(int first_value, int j, int n) {
 
 // The polar angle of c measured from the unit vector e, in (−π, π]: atan2 of c's components
 // along e and across it, by its Taylor series where that is small (|y/x| < 0.05: the series' next
-// term is below 5e-16 of it), as it is for a curve point near its sample's angle.
+// term, (y/x)^11 / 11, is below 5e-16 rad), as it is for a curve point near its sample's angle.
 double angle_from(const Eigen::Vector2d& c, const Eigen::Vector2d& e) {
   const double x = e.dot(c), y = e.x() * c.y() - e.y() * c.x();
   if (x > 0 && std::abs(y) < 0.05 * x) {
