@@ -341,18 +341,15 @@ LimitedCurve fit_by_need(const PolarFunction& R, const ProfileTable& table, cons
   // 3. Knot removal by refit: a mirrored curve's knot on the mirror line first (one control point
   // for one fit, with Lawson's steps until they no longer gain when it misses by a little), then
   // the least needed interior breaks (those between the spans of smallest error), each removal
-  // kept when the refit still meets the tolerance, then the mirror line's knot again if it stayed
-  // (fewer spans elsewhere may let it go). The trial fits give up their Lawson steps early when
-  // they are far off (ProfileFitOptions::target).
-  const auto remove_mirror_knot = [&] {
-    if (best.space.ends() != Ends::mirrored) return;
+  // kept when the refit still meets the tolerance. The trial fits give up their Lawson steps early
+  // when they are far off (ProfileFitOptions::target).
+  if (place.shape.ends == Ends::mirrored) {
     const Shape smooth{Ends::mirrored_smooth, place.shape.multiple};
     Fit c = fit_on(best.space.breaks(), smooth, table, p, trial, kShare * tol);
     if (c.max > kShare * tol && c.max <= kNearMiss * kShare * tol)
       c = fit_on(best.space.breaks(), smooth, table, p, converged_options(p), kShare * tol);
     if (c.max <= kShare * tol) best = std::move(c);
-  };
-  remove_mirror_knot();
+  }
   {
     std::vector<std::pair<double, double>> order;  // (larger neighbouring span error, break)
     const std::vector<double>& b = best.space.breaks();
@@ -370,7 +367,6 @@ LimitedCurve fit_by_need(const PolarFunction& R, const ProfileTable& table, cons
       if (c.max <= kShare * tol) best = std::move(c);
     }
   }
-  remove_mirror_knot();
 
   // 4. Verified against R itself (or its table); where it misses, the span of the largest error
   // is split (greedy insertion) and the minimax fit repeated.

@@ -208,6 +208,27 @@ TEST(DegreeLimited, FewestControlPointsIsTheBestDegreesFitWhateverTheThreadsDo) 
   EXPECT_LE(dense_distance(a.curve, R), 1e-3);
 }
 
+// After its finalists, fewest_control_points fits every degree that predicts fewer control points
+// than the best result: the mirrored half of test::mirror_symmetric_profile at 0.1 µm with one
+// finalist, where degree 6 predicts the fewest but needs 15, and degree 5, predicting 14.6, is
+// fitted too and needs 13 — as with two finalists.
+TEST(DegreeLimited, ADegreeThatPredictsFewerControlPointsThanTheBestResultIsFittedToo) {
+  PolarFunction half = test::mirror_symmetric_profile();
+  half.end = std::numbers::pi / 2;
+  half.breakpoints.clear();
+  const double tol = 1e-4;
+  LimitedEffort one{
+      .table_intervals = 512, .placement_rounds = 10, .lawson_steps = 4, .finalists = 1};
+  LimitedEffort two = one;
+  two.finalists = 2;
+  const LimitedCurve c = fewest_control_points(half, {3, 4, 5, 6}, tol, one, {}, Mirror::at_end);
+  EXPECT_LT(c.control_points,
+            fewest_control_points(half, {6}, tol, one, {}, Mirror::at_end).control_points);
+  EXPECT_EQ(c.control_points,
+            fewest_control_points(half, {3, 4, 5, 6}, tol, two, {}, Mirror::at_end).control_points);
+  EXPECT_LE(dense_distance(c.curve, test::mirror_symmetric_profile()), tol);
+}
+
 TEST(DegreeLimited, FewestControlPointsStopsWhenAsked) {
   std::stop_source stop;
   stop.request_stop();
