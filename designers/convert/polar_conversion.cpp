@@ -1,7 +1,6 @@
 #include "designers/convert/polar_conversion.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <future>
 #include <optional>
@@ -18,6 +17,7 @@
 #include "src/nurbs/curve_join.h"
 #include "src/nurbs/curve_reversal.h"
 #include "src/nurbs/symbolic_product.h"
+#include "src/two_threads.h"
 
 namespace polarform {
 
@@ -41,15 +41,8 @@ std::vector<int> measure_arcs(const NurbsCurve2d& C, const PolarFunction& R,
                               bool both_cores = false) {
   const std::size_t arcs = breaks.size() - 1;
   std::vector<ProfileError> errors(arcs);
-  std::atomic<std::size_t> next{0};
-  const auto measure = [&] {
-    for (std::size_t j; (j = next++) < arcs;)
-      errors[j] = profile_error(C, R, breaks[j], breaks[j + 1]);
-  };
-  std::future<void> helper;
-  if (both_cores && arcs > 1) helper = std::async(std::launch::async, measure);
-  measure();
-  if (helper.valid()) helper.get();
+  on_two_threads(arcs, both_cores ? 1 : arcs,
+                 [&](std::size_t j) { errors[j] = profile_error(C, R, breaks[j], breaks[j + 1]); });
   std::vector<int> failing;
   out.arcs.clear();
   out.max_radial_error = out.max_normal_error = 0.0;

@@ -1,10 +1,10 @@
 #include "designers/convert/profile_table.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <future>
 #include <numbers>
+
+#include "src/two_threads.h"
 
 namespace polarform {
 
@@ -48,16 +48,7 @@ ProfileTable::ProfileTable(const PolarFunction& R, int intervals)
     }
   };
   // R is costly (a cam contour's envelope): the nodes in chunks, on two threads.
-  constexpr std::size_t kChunk = 64;
-  std::atomic<std::size_t> next{0};
-  const auto work = [&] {
-    for (std::size_t c; (c = next.fetch_add(kChunk)) < at_.size();)
-      for (std::size_t i = c; i < std::min(c + kChunk, at_.size()); ++i) evaluate(i);
-  };
-  std::future<void> helper;
-  if (at_.size() > 2 * kChunk) helper = std::async(std::launch::async, work);
-  work();
-  if (helper.valid()) helper.get();
+  on_two_threads(at_.size(), 64, evaluate);
   // The quintic Hermite interpolant of value, first and second derivative at both ends of each
   // interval, in monomials of t: with A_k = h^k R^(k)(at_i+), B_k = h^k R^(k)(at_i+1−), the basis
   // 1 − 10t³ + 15t⁴ − 6t⁵, t − 6t³ + 8t⁴ − 3t⁵, (t² − 3t³ + 3t⁴ − t⁵)/2 for A_0..A_2 and
