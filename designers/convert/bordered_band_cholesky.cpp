@@ -16,14 +16,8 @@ BorderedBandCholesky::BorderedBandCholesky(int size, int bandwidth, int border)
   border_.assign(static_cast<std::size_t>(m_) * size_, 0.0);
 }
 
-void BorderedBandCholesky::add(int i, int j, double value) {
-  if (i < j) std::swap(i, j);
-  if (i >= n_) {
-    border(i - n_, j) += value;
-  } else {
-    if (i - j > w_) throw InputError("bordered band Cholesky: entry outside the band");
-    band(i, j) += value;
-  }
+void BorderedBandCholesky::outside_band() {
+  throw InputError("bordered band Cholesky: entry outside the band");
 }
 
 // Golub & Van Loan Alg. 4.3.5 (band Cholesky, row by row), then the border rows against the band

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <utility>
 #include <vector>
 
 namespace polarform {
@@ -18,13 +19,22 @@ class BorderedBandCholesky {
 
   // A(i, j) += value (and A(j, i): one call for the pair); (i, j) must lie within the band or the
   // border.
-  void add(int i, int j, double value);
+  void add(int i, int j, double value) {
+    if (i < j) std::swap(i, j);
+    if (i >= n_)
+      border(i - n_, j) += value;
+    else if (i - j <= w_)
+      band(i, j) += value;
+    else
+      outside_band();
+  }
   // Factorises A in place; false when A is not (numerically) positive definite.
   bool factorize();
   // x with A·x = b, after factorize().
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
 
  private:
+  [[noreturn]] static void outside_band();
   double& band(int i, int k) { return band_[static_cast<std::size_t>(i) * (w_ + 1) + (i - k)]; }
   double band(int i, int k) const {
     return band_[static_cast<std::size_t>(i) * (w_ + 1) + (i - k)];

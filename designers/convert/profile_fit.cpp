@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "designers/convert/bordered_band_cholesky.h"
 #include "designers/convert/polar_function.h"
@@ -17,10 +18,16 @@ struct Sample {
   Eigen::Vector2d radial;            // the unit vector at polar angle t
   Eigen::Vector2d point, direction;  // radial error ≈ direction · (C(t) − point)
   Eigen::Vector2d anchor;            // where the full-distance share pulls C(t)
+  double weight = 1.0;
+  const double* N;  // the p + 1 basis values at t (in Samples::basis)
   int first;
   int first_value;  // unmirrored spaces: the distinct control value of N[0], the others following
-  double N[kMaxDegree + 1];
-  double weight = 1.0;
+};
+
+// The samples and their basis values, p + 1 each, side by side in one array.
+struct Samples {
+  std::vector<double> basis;
+  std::vector<Sample> list;
 };
 
 // The distinct control value `first_value + j` of an unmirrored space (periodic: wrapped once).
@@ -85,14 +92,20 @@ std::vector<Held> held(const SplineSpace& space, const ProfileTable& R) {
   return out;
 }
 
-std::vector<Sample> samples(const SplineSpace& space, const ProfileTable& R, int per_span) {
-  std::vector<Sample> out;
+Samples samples(const SplineSpace& space, const ProfileTable& R, int per_span) {
+  Samples out;
   const std::vector<double>& b = space.breaks();
-  out.reserve(static_cast<std::size_t>(space.spans() * per_span));
-  for (int j = 0; j < space.spans(); ++j)
+  const int p = space.degree(), count = space.spans() * per_span;
+  out.basis.resize(static_cast<std::size_t>(count) * (p + 1));
+  out.list.resize(static_cast<std::size_t>(count));
+  for (int j = 0; j < space.spans(); ++j) {
+    double t[kMaxSamplesPerSpan];
+    for (int k = 0; k < per_span; ++k) t[k] = b[j] + (b[j + 1] - b[j]) * (k + 0.5) / per_span;
+    double* N = &out.basis[static_cast<std::size_t>(j) * per_span * (p + 1)];
+    const int first = space.basis_on_span(j, t, per_span, N);
     for (int k = 0; k < per_span; ++k) {
-      Sample s;
-      s.t = b[j] + (b[j + 1] - b[j]) * (k + 0.5) / per_span;
+      Sample& s = out.list[static_cast<std::size_t>(j * per_span + k)];
+      s.t = t[k];
       double d[2];
       R.derivatives(s.t, d);
       const Eigen::Vector2d er(std::cos(s.t), std::sin(s.t)), et(-er.y(), er.x());
@@ -101,10 +114,11 @@ std::vector<Sample> samples(const SplineSpace& space, const ProfileTable& R, int
       // ρ moves by e_r·δ and ψ by e_θ·δ / R, so |ρ − R(ψ)| by (e_r − R'/R e_θ)·δ.
       s.direction = er - d[1] / d[0] * et;
       s.anchor = s.point;
-      s.first = space.basis(s.t, s.N);
-      s.first_value = space.value(s.first);
-      out.push_back(s);
+      s.N = N + k * (p + 1);
+      s.first = first;
+      s.first_value = space.value(first);
     }
+  }
   return out;
 }
 
@@ -243,7 +257,11 @@ double relinearise(Sample& s, const Eigen::Vector2d& c, const ProfileTable& R) {
 // Lawson 1961: w_i ← w_i·|r_i|, the best max residual kept.
 FittedProfile fit_profile(const SplineSpace& space, const ProfileTable& R,
                           const ProfileFitOptions& options) {
-  std::vector<Sample> ss = samples(space, R, options.per_span);
+  if (options.per_span < 1 || options.per_span > kMaxSamplesPerSpan)
+    throw InputError("profile fit: " + std::to_string(options.per_span) +
+                     " samples per span outside [1, " + std::to_string(kMaxSamplesPerSpan) + "]");
+  Samples all = samples(space, R, options.per_span);
+  std::vector<Sample>& ss = all.list;
   const std::vector<Held> hold = held(space, R);
   FittedProfile best{solve(space, ss, hold, options.slide), {}};
   Eigen::MatrixXd coefs = best.coefs;
@@ -278,13 +296,19 @@ FittedProfile fit_profile(const SplineSpace& space, const ProfileTable& R,
 std::vector<double> span_errors(const SplineSpace& space, const Eigen::MatrixXd& coefs,
                                 const ProfileTable& R, int per_span) {
   const std::vector<double>& b = space.breaks();
+  const int p = space.degree();
   std::vector<double> out(static_cast<std::size_t>(space.spans()), 0.0);
-  for (int j = 0; j < space.spans(); ++j)
+  std::vector<double> t(static_cast<std::size_t>(per_span) + 1),
+      N(t.size() * static_cast<std::size_t>(p + 1));
+  for (int j = 0; j < space.spans(); ++j) {
+    for (int k = 0; k <= per_span; ++k) t[k] = b[j] + (b[j + 1] - b[j]) * k / per_span;
+    const int first = space.basis_on_span(j, t.data(), per_span + 1, N.data());
     for (int k = 0; k <= per_span; ++k) {
-      const double t = b[j] + (b[j + 1] - b[j]) * k / per_span;
-      const Eigen::Vector2d c = space.point(coefs, t);
-      out[j] = std::max(out[j], std::abs(c.norm() - R(polar_angle_near(c.x(), c.y(), t))));
+      const Eigen::Vector2d c =
+          space.point(coefs, first, &N[static_cast<std::size_t>(k) * (p + 1)]);
+      out[j] = std::max(out[j], std::abs(c.norm() - R(polar_angle_near(c.x(), c.y(), t[k]))));
     }
+  }
   return out;
 }
 

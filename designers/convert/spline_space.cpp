@@ -59,9 +59,19 @@ int SplineSpace::basis(double t, double* N) const {
   return span - degree_;
 }
 
+int SplineSpace::basis_on_span(int j, const double* t, int count, double* N) const {
+  const int span = find_span(degree_, knots_, n_, 0.5 * (breaks_[j] + breaks_[j + 1]));
+  basis_funs_on_span(span, t, count, degree_, knots_, N);
+  return span - degree_;
+}
+
 Eigen::Vector2d SplineSpace::point(const Eigen::MatrixXd& coefs, double t) const {
   double N[kMaxDegree + 1];
   const int first = basis(t, N);
+  return point(coefs, first, N);
+}
+
+Eigen::Vector2d SplineSpace::point(const Eigen::MatrixXd& coefs, int first, const double* N) const {
   Eigen::Vector2d p = Eigen::Vector2d::Zero(), q = Eigen::Vector2d::Zero();
   for (int j = 0; j <= degree_; ++j)
     (reflected(first + j) ? q : p) += N[j] * coefs.col(value(first + j));

@@ -52,6 +52,8 @@ class SplineSpace {
   // among the curve's (the others follow): value(k + j) is its distinct control value, reflected
   // by reflection() when reflected(k + j).
   int basis(double t, double* N) const;
+  // basis() at `count` parameters t[0..count) of the span [b_j, b_{j+1}], into N[i·(p+1) + j].
+  int basis_on_span(int j, const double* t, int count, double* N) const;
   int value(int k) const { return periodic() ? k % size_ : reflected(k) ? n_ - 1 - k : k; }
   bool reflected(int k) const { return mirrored() && 2 * k > n_ - 1; }
   const Eigen::Matrix2d& reflection() const { return reflection_; }
@@ -61,6 +63,8 @@ class SplineSpace {
 
   // The point at t of the distinct control values `coefs` (2 x size).
   Eigen::Vector2d point(const Eigen::MatrixXd& coefs, double t) const;
+  // The point of the basis values N[0..p] returned by basis() or basis_on_span() as `first`.
+  Eigen::Vector2d point(const Eigen::MatrixXd& coefs, int first, const double* N) const;
   // The clamped curve of the distinct control values (2 x size); a mirrored one over [a, 2b − a].
   NurbsCurve2d curve(const Eigen::MatrixXd& coefs) const;
 

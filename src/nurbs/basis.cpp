@@ -20,6 +20,28 @@ void basis_funs(int span, double u, int p, const Knots& U, double* N) {
   }
 }
 
+void basis_funs_on_span(int span, const double* u, int count, int p, const Knots& U, double* N) {
+  // A2.2's right[r + 1] + left[j − r] is U[span + r + 1] − U[span + 1 − j + r], whatever u.
+  double inverse[kMaxDegree + 1][kMaxDegree + 1];
+  for (int j = 1; j <= p; ++j)
+    for (int r = 0; r < j; ++r) inverse[j][r] = 1.0 / (U[span + r + 1] - U[span + 1 - j + r]);
+  for (int i = 0; i < count; ++i, N += p + 1) {
+    double left[kMaxDegree + 1], right[kMaxDegree + 1];
+    N[0] = 1.0;
+    for (int j = 1; j <= p; ++j) {
+      left[j] = u[i] - U[span + 1 - j];
+      right[j] = U[span + j] - u[i];
+      double saved = 0.0;
+      for (int r = 0; r < j; ++r) {
+        const double temp = N[r] * inverse[j][r];
+        N[r] = saved + right[r + 1] * temp;
+        saved = left[j - r] * temp;
+      }
+      N[j] = saved;
+    }
+  }
+}
+
 void ders_basis_funs(int span, double u, int p, int d, const Knots& U, double* ders) {
   constexpr int M = kMaxDegree + 1;
   double ndu[M][M], a[2][M], left[M], right[M];
