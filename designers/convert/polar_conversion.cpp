@@ -26,13 +26,14 @@ namespace {
 constexpr std::size_t kMaxArcs = 2000;
 // The refit's degrees (the fewest control points wins: 4 and 5 on cam profiles with jumps in
 // their derivatives, 6 on near-circular heads, 3 where the others fold) and its effort: a coarser
-// table of R than the export's, half its Lawson steps and a third of its placement rounds, two
-// degrees fitted to the end. Measured on the 66 rows of tests/jobs/study/peer_counts_test.cpp:
-// 10 placement rounds give the same 1418 control points in all as 30, and take 125 M
-// instructions against 153 M (callgrind, the whole BM_RollerCamConversion1um run, about 30 M of
-// it the program's start).
+// table of R than the export's, half its Lawson steps, a third of its placement rounds and 8
+// knot removals tried rather than 20, two degrees fitted to the end. Measured on the 66 rows of
+// tests/jobs/study/peer_counts_test.cpp: 10 placement rounds give the same 1418 control points
+// in all as 30, and take 125 M instructions against 153 M (callgrind, the whole
+// BM_RollerCamConversion1um run, about 30 M of it the program's start); 8 removals (the most
+// removable first) give 1419 against 1418 with 20 and 1426 with 6, in 109 M against 115 M.
 const std::vector<int> kRefitDegrees = {3, 4, 5, 6};
-constexpr LimitedEffort kRefitEffort = {512, 10, 4, 20, 2};
+constexpr LimitedEffort kRefitEffort = {512, 10, 4, 8, 2};
 
 // Measures every arc of C; returns the indices of the arcs over the tolerance. `both_cores`: a
 // second thread takes arcs too (for the refit, measured when nothing else runs).
