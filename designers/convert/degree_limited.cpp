@@ -369,11 +369,11 @@ LimitedCurve fit_by_need(const PolarFunction& R, const ProfileTable& table, cons
     const std::vector<double>& b = best.space.breaks();
     for (std::size_t i = 1; i + 1 < b.size(); ++i)
       if (!std::binary_search(fixed.begin(), fixed.end(), b[i])) untried.emplace_back(b[i], 0.0);
-    const auto bound = [&] {
+    const auto take_bounds = [&] {
       const BSpline xy = plain_spline(best.space.curve(best.coefs));
       for (auto& [at, bound] : untried) bound = remove_knot_least_squares(xy, at).bound;
     };
-    bound();
+    take_bounds();
     const double hopeless = std::ldexp(kShare * tol, p + 4);
     for (std::size_t tries = 0; tries < effort.removal_tries && !untried.empty(); ++tries) {
       throw_if_stopped(stop);
@@ -386,7 +386,7 @@ LimitedCurve fit_by_need(const PolarFunction& R, const ProfileTable& table, cons
       std::vector<double> fewer = best.space.breaks();
       fewer.erase(std::find(fewer.begin(), fewer.end(), at));
       Fit c = fit_on(std::move(fewer), shape_of(best.space), table, p, trial, kShare * tol);
-      if (c.max <= kShare * tol) best = std::move(c), bound();
+      if (c.max <= kShare * tol) best = std::move(c), take_bounds();
     }
   }
 

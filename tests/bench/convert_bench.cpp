@@ -1,10 +1,11 @@
 // Benchmarks of the cam conversion path: synthesis + conversion + verification of the roller
 // example at 1 µm (issue 14's target: <= 5 ms; with the refit that makes the profile compact it
-// measured 11-12 ms wall on the 2-core CI machine for 22 control points — the refit runs on both
-// cores beside the product C = F·B, which alone takes 2.4 ms; callgrind counts 125 M
+// measured 9.2 ms wall on the 2-core CI machine for 22 control points — the refit runs on both
+// cores beside the product C = F·B, which alone takes 2.2 ms; callgrind counts 109 M
 // instructions for the whole program run, about 30 M of them the program's start, against 260 M
-// before the fits got cheaper and the placement kept its best round), one UI design update at
-// 10 µm (target < 2 ms, measured 6.7 ms) and the degree-3 profile at 1 µm (8.2 ms).
+// before the fits got cheaper, the placement kept its best round and the knot removals went the
+// most removable first), one UI design update at 10 µm (target < 2 ms, measured 6.2 ms) and the
+// degree-3 profile at 1 µm (7.3–8.8 ms).
 #include <benchmark/benchmark.h>
 
 #include <numbers>
