@@ -23,8 +23,8 @@ struct LimitedEffort {
   // give 1971 control points in all against 2022 with 10.
   int placement_rounds = 30;
   int lawson_steps = 8;  // of each minimax fit (more gain little)
-  // Knot removals tried by refit, the most removable first: 20 give about 6 % fewer control
-  // points than 3 on the examples.
+  // Knot removals tried by refit, the most removable first (the converter's refit tries 8:
+  // polar_conversion.cpp gives what that costs).
   std::size_t removal_tries = 20;
   // fewest_control_points: how many degrees are fitted to the end (those whose placement predicts
   // the fewest control points; a degree that fails makes way for the next).

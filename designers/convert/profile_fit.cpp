@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <string>
 
 #include "designers/convert/bordered_band_cholesky.h"
 #include "designers/convert/polar_function.h"
@@ -98,11 +97,11 @@ Samples samples(const SplineSpace& space, const ProfileTable& R, int per_span) {
   const int p = space.degree(), count = space.spans() * per_span;
   out.basis.resize(static_cast<std::size_t>(count) * (p + 1));
   out.list.resize(static_cast<std::size_t>(count));
+  std::vector<double> t(static_cast<std::size_t>(per_span));
   for (int j = 0; j < space.spans(); ++j) {
-    double t[kMaxSamplesPerSpan];
     for (int k = 0; k < per_span; ++k) t[k] = b[j] + (b[j + 1] - b[j]) * (k + 0.5) / per_span;
     double* N = &out.basis[static_cast<std::size_t>(j) * per_span * (p + 1)];
-    const int first = space.basis_on_span(j, t, per_span, N);
+    const int first = space.basis_on_span(j, t.data(), per_span, N);
     for (int k = 0; k < per_span; ++k) {
       Sample& s = out.list[static_cast<std::size_t>(j * per_span + k)];
       s.t = t[k];
@@ -257,9 +256,6 @@ double relinearise(Sample& s, const Eigen::Vector2d& c, const ProfileTable& R) {
 // Lawson 1961: w_i ← w_i·|r_i|, the best max residual kept.
 FittedProfile fit_profile(const SplineSpace& space, const ProfileTable& R,
                           const ProfileFitOptions& options) {
-  if (options.per_span < 1 || options.per_span > kMaxSamplesPerSpan)
-    throw InputError("profile fit: " + std::to_string(options.per_span) +
-                     " samples per span outside [1, " + std::to_string(kMaxSamplesPerSpan) + "]");
   Samples all = samples(space, R, options.per_span);
   std::vector<Sample>& ss = all.list;
   const std::vector<Held> hold = held(space, R);

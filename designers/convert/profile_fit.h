@@ -15,11 +15,8 @@
 
 namespace polarform {
 
-// The most samples per span a fit takes (the degree-limited fits take 2p + 2).
-inline constexpr int kMaxSamplesPerSpan = 2 * kMaxDegree + 2;
-
 struct ProfileFitOptions {
-  int per_span = 8;      // samples per span, 1..kMaxSamplesPerSpan
+  int per_span = 8;      // samples per span
   double slide = 1e-2;   // λ: weight of the full distance against the radial one
   int lawson_steps = 0;  // Gauss–Newton steps after the plain fit
   bool reweight = true;  // each with Lawson's reweighting
