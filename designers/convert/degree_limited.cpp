@@ -4,7 +4,6 @@
 #include <Eigen/SparseLU>
 #include <algorithm>
 #include <cmath>
-#include <future>
 #include <limits>
 #include <numbers>
 #include <numeric>
@@ -21,6 +20,7 @@
 #include "src/error.h"
 #include "src/number_text.h"
 #include "src/nurbs/knot_removal.h"
+#include "src/task_pool.h"
 
 namespace polarform {
 
@@ -456,20 +456,19 @@ LimitedCurve fewest_control_points(const PolarFunction& R, const std::vector<int
   const Ends ends = R.closed()                 ? Ends::periodic
                     : mirror == Mirror::at_end ? Ends::mirrored
                                                : Ends::clamped;
-  // Every degree's knots placed (plain fits, cheap), each on its own thread.
-  std::vector<std::future<Placement>> placing;
+  // Every degree's knots placed (plain fits, cheap), each a task of its own.
+  std::vector<Task<Placement>> placing;
   for (int degree : degrees)
-    placing.push_back(std::async(std::launch::async, [&, degree] {
-      return place_knots(R, ends, table, degree, tol, effort, stop);
-    }));
+    placing.push_back(
+        run_task([&, degree] { return place_knots(R, ends, table, degree, tol, effort, stop); }));
   std::vector<Placement> places;
-  for (std::future<Placement>& f : placing) places.push_back(f.get());
+  for (Task<Placement>& f : placing) places.push_back(f.get());
   std::stable_sort(places.begin(), places.end(), [](const Placement& a, const Placement& b) {
     return a.predicted_control_points < b.predicted_control_points ||
            (a.predicted_control_points == b.predicted_control_points && a.degree < b.degree);
   });
   // Then the minimax fits in the order of the control points the placements predict, as many at
-  // a time (each on its own thread) as are still wanted, until `finalists` have met the tolerance,
+  // a time (each a task of its own) as are still wanted, until `finalists` have met the tolerance,
   // then one at a time while the next predicts fewer control points than the best result (the
   // predictions err by a few control points, which decides between degrees on small curves: a
   // head's single sextic).
@@ -480,14 +479,13 @@ LimitedCurve fewest_control_points(const PolarFunction& R, const std::vector<int
     return best && places[k].predicted_control_points < best->control_points;
   };
   while (next < places.size() && (fitted < effort.finalists || promising(next))) {
-    std::vector<std::future<LimitedCurve>> fitting;
+    std::vector<Task<LimitedCurve>> fitting;
     const std::size_t batch = fitted < effort.finalists ? effort.finalists - fitted : 1;
     for (std::size_t k = next; k < std::min(places.size(), next + batch); ++k)
-      fitting.push_back(std::async(std::launch::async, [&, k] {
-        return fit_by_need(R, table, places[k], tol, effort, stop);
-      }));
+      fitting.push_back(
+          run_task([&, k] { return fit_by_need(R, table, places[k], tol, effort, stop); }));
     next += fitting.size();
-    for (std::future<LimitedCurve>& f : fitting) try {
+    for (Task<LimitedCurve>& f : fitting) try {
         LimitedCurve c = f.get();
         ++fitted;
         if (!best || c.control_points < best->control_points ||

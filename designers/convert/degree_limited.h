@@ -64,8 +64,8 @@ enum class Mirror { none, at_end };
 // placement's minimax fit on its spans, scaled as if its error went like h^(p+1)) until
 // `effort.finalists` have met the tolerance and no degree left predicts fewer control points than
 // the best of them, and the verified curve with the fewest control points kept (the lower degree
-// among equals). The degrees' placements and the finalists' fits run on
-// threads of their own; R's derivatives must be safe to call concurrently (every PolarFunction's
+// among equals). The degrees' placements and the finalists' fits are tasks of their own
+// (task_pool.h); R's derivatives must be safe to call concurrently (every PolarFunction's
 // are: pure functions of immutable data). Throws NumericalError when every degree fails, or when
 // `stop` is requested (between two fits).
 LimitedCurve fewest_control_points(const PolarFunction& R, const std::vector<int>& degrees,

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <future>
 #include <optional>
 #include <stop_token>
 #include <string>
@@ -17,7 +16,7 @@
 #include "src/nurbs/curve_join.h"
 #include "src/nurbs/curve_reversal.h"
 #include "src/nurbs/symbolic_product.h"
-#include "src/two_threads.h"
+#include "src/task_pool.h"
 
 namespace polarform {
 
@@ -35,15 +34,15 @@ constexpr std::size_t kMaxArcs = 2000;
 const std::vector<int> kRefitDegrees = {3, 4, 5, 6};
 constexpr LimitedEffort kRefitEffort = {512, 10, 4, 8, 2};
 
-// Measures every arc of C; returns the indices of the arcs over the tolerance. `both_cores`: a
-// second thread takes arcs too (for the refit, measured when nothing else runs).
+// Measures every arc of C; returns the indices of the arcs over the tolerance. `every_core`: the
+// pool's threads take arcs too (for the refit, measured when nothing else runs).
 std::vector<int> measure_arcs(const NurbsCurve2d& C, const PolarFunction& R,
                               const std::vector<double>& breaks, PolarConversion& out,
-                              bool both_cores = false) {
+                              bool every_core = false) {
   const std::size_t arcs = breaks.size() - 1;
   std::vector<ProfileError> errors(arcs);
-  on_two_threads(arcs, both_cores ? 1 : arcs,
-                 [&](std::size_t j) { errors[j] = profile_error(C, R, breaks[j], breaks[j + 1]); });
+  in_parallel(arcs, every_core ? 1 : arcs,
+              [&](std::size_t j) { errors[j] = profile_error(C, R, breaks[j], breaks[j + 1]); });
   std::vector<int> failing;
   out.arcs.clear();
   out.max_radial_error = out.max_normal_error = 0.0;
@@ -149,12 +148,13 @@ PolarConversion convert_polar_function(const PolarFunction& R, const ConversionO
   if (R.end - R.start > 2 * std::numbers::pi + 1e-12)
     throw InputError("conversion: angular domain exceeds 360°");
 
-  // The refit needs only R and ε: it runs on threads of its own while the product is built and
-  // measured (and is stopped, should the product fail).
+  // The refit needs only R and ε: it runs as a task of its own while the product is built and
+  // measured (and is stopped, should the product fail); waiting for it, this thread takes its
+  // queued work.
   std::stop_source stop_refit;
-  std::future<std::optional<LimitedCurve>> refitting;
+  Task<std::optional<LimitedCurve>> refitting;
   if (options.compaction == Compaction::refit)
-    refitting = std::async(std::launch::async, [&R, &options, stop = stop_refit.get_token()] {
+    refitting = run_task([&R, &options, stop = stop_refit.get_token()] {
       return fewest_control_points_refit(R, options.tolerance, true, stop);
     });
   struct StopOnExit {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "src/two_threads.h"
+#include "src/task_pool.h"
 
 namespace polarform {
 
@@ -47,8 +47,8 @@ ProfileTable::ProfileTable(const PolarFunction& R, int intervals)
       std::copy(nodes[i].left, nodes[i].left + 3, nodes[i].right);
     }
   };
-  // R is costly (a cam contour's envelope): the nodes in chunks, on two threads.
-  on_two_threads(at_.size(), 64, evaluate);
+  // R is costly (a cam contour's envelope): the nodes in chunks, on every core.
+  in_parallel(at_.size(), 64, evaluate);
   // The quintic Hermite interpolant of value, first and second derivative at both ends of each
   // interval, in monomials of t: with A_k = h^k R^(k)(at_i+), B_k = h^k R^(k)(at_i+1−), the basis
   // 1 − 10t³ + 15t⁴ − 6t⁵, t − 6t³ + 8t⁴ − 3t⁵, (t² − 3t³ + 3t⁴ − t⁵)/2 for A_0..A_2 and
