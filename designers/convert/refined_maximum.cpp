@@ -52,12 +52,15 @@ Maximum refined_maximum(const std::function<double(double)>& f, const std::vecto
                     [](const Sample& x, const Sample& y) { return x.value > y.value; });
   best = {peaks.front().t, peaks.front().value};
   for (int k = 0; k < count; ++k) {
-    // Brent minimises −f, from the peak and its neighbours, to 1e-7 of the bracket.
+    // Brent minimises −f, from the peak and its neighbours, to 1e-4 of the bracket: the value
+    // then lies within about 1e-8 of the peak's (relative), and the search takes about 6
+    // evaluations instead of 12 at 1e-7 of the bracket, where round-off in f had it fall back on
+    // golden-section steps (measured on the roller's conversion at 1 µm).
     const Sample& s = peaks[k];
     if (!(s.hi > s.lo)) continue;
     const BrentStart start{s.t, -s.value, -s.f_lo, -s.f_hi};
     const Minimum m =
-        brent_minimum([&](double t) { return -f(t); }, s.lo, s.hi, 1e-7 * (s.hi - s.lo), &start);
+        brent_minimum([&](double t) { return -f(t); }, s.lo, s.hi, 1e-4 * (s.hi - s.lo), &start);
     if (-m.value > best.value) best = {m.x, -m.value};
   }
   return best;

@@ -15,7 +15,7 @@ struct Maximum {
 
 // Max of f over [grid.front(), grid.back()]: `per_interval` + 1 samples in each interval of the
 // grid, each of the `refine` largest local maxima of the samples refined by Brent's search
-// between its neighbours (started from the three samples, to a relative abscissa of 1e-7).
+// between its neighbours (started from the three samples, to 1e-4 of that bracket).
 Maximum refined_maximum(const std::function<double(double)>& f, const std::vector<double>& grid,
                         int per_interval, int refine);
 
