@@ -4,6 +4,7 @@
 #include <Eigen/SparseLU>
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <numbers>
 #include <numeric>
@@ -456,9 +457,12 @@ LimitedCurve fewest_control_points(const PolarFunction& R, const std::vector<int
   const Ends ends = R.closed()                 ? Ends::periodic
                     : mirror == Mirror::at_end ? Ends::mirrored
                                                : Ends::clamped;
-  // Every degree's knots placed (plain fits, cheap), each a task of its own.
+  // Every degree's knots placed (plain fits, cheap), each a task of its own: the highest degree,
+  // the costliest, first, so that the cores finish together.
+  std::vector<int> by_cost = degrees;
+  std::sort(by_cost.begin(), by_cost.end(), std::greater<>());
   std::vector<Task<Placement>> placing;
-  for (int degree : degrees)
+  for (int degree : by_cost)
     placing.push_back(
         run_task([&, degree] { return place_knots(R, ends, table, degree, tol, effort, stop); }));
   std::vector<Placement> places;

@@ -191,6 +191,12 @@ PolarConversion convert_polar_function(const PolarFunction& R, const ConversionO
   }
 
   out.steps.push_back({"product", out.curve.size(), out.max_radial_error});
+  // The base arcs' synchronisation with F (whichever curve is kept), while the refit runs.
+  out.synchronization_error = 0.0;
+  for (std::size_t j = 0; j + 1 < breaks.size(); ++j)
+    out.synchronization_error = std::max(
+        out.synchronization_error, arc_synchronization_error(F.spline, breaks[j], breaks[j + 1],
+                                                             options.base, options.alpha, 64));
   const PolarConversion product_only = out;
   if (options.compaction == Compaction::refit && refit(R, breaks, refitting.get(), out)) {
     out.steps.push_back({"refit", out.curve.size(), out.max_radial_error});
@@ -211,12 +217,6 @@ PolarConversion convert_polar_function(const PolarFunction& R, const ConversionO
     out.steps.push_back({"knot removal", out.curve.size(), out.max_radial_error});
   }
 
-  out.synchronization_error = 0.0;
-  for (std::size_t j = 0; j + 1 < breaks.size(); ++j)
-    out.synchronization_error = std::max(
-        out.synchronization_error,
-        arc_synchronization_error(F.spline, breaks[j], breaks[j + 1], options.base, options.alpha,
-                                  64));
   out.max_tangent_jump =
       max_tangent_jump(out.curve, std::vector<double>(breaks.begin() + 1, breaks.end() - 1));
   return out;
