@@ -122,25 +122,36 @@ std::shared_ptr<CurveTable> build_table(CamTrace trace) {
   return t;
 }
 
+// The cubic Hermite interpolant of θ(ψ) on table interval i (dθ/dψ = 1/ψ') at ψ = target: within
+// ~h⁴ of the root of ψ(θ) = target.
+double hermite_start(const CurveTable& t, int i, double target) {
+  const double lo = t.theta[i], hi = t.theta[i + 1];
+  const double p0 = t.psi[i], p1 = t.psi[i + 1];
+  if (p1 == p0) return lo;
+  const double h = p1 - p0, x = (target - p0) / h, x2 = x * x, x3 = x2 * x;
+  const double theta = (2 * x3 - 3 * x2 + 1) * lo + (x3 - 2 * x2 + x) * h / t.rate_lo[i] +
+                       (-2 * x3 + 3 * x2) * hi + (x3 - x2) * h / t.rate_hi[i];
+  return theta >= lo && theta <= hi ? theta : lo + (hi - lo) * x;
+}
+
+// ψ(θ) − target for the curve point xy at θ in table interval i (ψ unwrapped next to the
+// interval's start).
+double psi_residual(const CurveTable& t, int i, const Jet* xy, double target) {
+  const double p0 = t.psi[i];
+  return p0 + std::remainder(std::atan2(xy[1][0], xy[0][0]) - p0, kTwoPi) - target;
+}
+
 // θ with ψ(θ) = target inside table interval i, by Newton's method safeguarded by bisection,
-// started from the cubic Hermite interpolant of θ(ψ) on the interval (dθ/dψ = 1/ψ'), which is
-// already within ~h⁴ of the root, so one step usually settles it.
+// started from the Hermite interpolant, so one step usually settles it.
 double invert(const CurveTable& t, int i, double target) {
   double lo = t.theta[i], hi = t.theta[i + 1];
-  const double p0 = t.psi[i], p1 = t.psi[i + 1];
-  double theta = lo;
-  if (p1 != p0) {
-    const double h = p1 - p0, x = (target - p0) / h, x2 = x * x, x3 = x2 * x;
-    theta = (2 * x3 - 3 * x2 + 1) * lo + (x3 - 2 * x2 + x) * h / t.rate_lo[i] +
-            (-2 * x3 + 3 * x2) * hi + (x3 - x2) * h / t.rate_hi[i];
-    if (!(theta >= lo && theta <= hi)) theta = lo + (hi - lo) * x;
-  }
+  double theta = hermite_start(t, i, target);
   // A Newton step this small leaves an error of order step² · ψ''/ψ': below round-off.
   constexpr double kSettled = 1e-9;
   for (int iter = 0; iter < 100; ++iter) {
     Jet xy[2];
     curve_jets(t, t.segment[i], theta, 1, xy);
-    const double g = p0 + std::remainder(std::atan2(xy[1][0], xy[0][0]) - p0, kTwoPi) - target;
+    const double g = psi_residual(t, i, xy, target);
     if (g == 0.0) return theta;
     (t.direction * g > 0 ? hi : lo) = theta;
     double next = theta - g / psi_rate(xy);
@@ -211,6 +222,23 @@ PolarFunction traced_polar_function(CamTrace trace) {
     const auto before = [&](double a, double b) { return t.direction > 0 ? a < b : a > b; };
     const auto it = std::upper_bound(t.psi.begin(), t.psi.end(), psi, before);
     const int i = std::clamp(static_cast<int>(it - t.psi.begin()) - 1, 0, static_cast<int>(t.psi.size()) - 2);
+    if (d == 0) {
+      // R alone (a measurement's): the curve point at the Hermite start θ₀, whose polar angle
+      // misses ψ by g, taken back to ψ along r(ψ) to first order, r − g·(dr/dθ)/(dψ/dθ): the
+      // term left, R''·g²/2, is below 1e-13 mm when |g| <= 1e-8 (|R''| < 2000 mm). One curve
+      // evaluation instead of Newton's two or three.
+      constexpr double kFirstOrder = 1e-8;
+      const double theta0 = hermite_start(t, i, psi);
+      Jet xy[2];
+      curve_jets(t, t.segment[i], theta0, 1, xy);
+      const double g = psi_residual(t, i, xy, psi);
+      if (std::abs(g) <= kFirstOrder) {
+        const double r = std::hypot(xy[0][0], xy[1][0]);
+        const double dr = (xy[0][0] * xy[0][1] + xy[1][0] * xy[1][1]) / r;
+        out[0] = r - g * dr / psi_rate(xy);
+        return;
+      }
+    }
     const double theta = invert(t, i, psi);
 
     // r and ψ as functions of θ, then the inverse-function rule for R(ψ) (Faà di Bruno).

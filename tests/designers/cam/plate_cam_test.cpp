@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <random>
 
 #include "designers/cam/base_radius.h"
 #include "designers/cam/cam_analysis.h"
@@ -16,6 +17,8 @@
 #include "src/units.h"
 #include "tests/designers/cam/cam_test_support.h"
 #include "tests/designers/cam/segment_support.h"
+#include "tests/support/designers/example_cams.h"
+#include "tests/support/designers/random_cams.h"
 
 namespace polarform {
 namespace {
@@ -49,6 +52,25 @@ double polar(const PolarFunction& f, double psi, int k) {
 double domain_angle(const PolarFunction& f, const Eigen::Vector2d& p) {
   const double psi = std::atan2(p.y(), p.x());
   return psi - 2 * pi * std::floor((psi - f.start) / (2 * pi));
+}
+
+// R(ψ) alone (first order from the Hermite start of θ(ψ)) agrees with R from the Newton-inverted
+// θ (the derivatives' path) to round-off, on the plate examples and 20 random designs.
+TEST(PlateCam, RAloneAgreesWithTheNewtonInversion) {
+  std::vector<CamDesign> designs;
+  for (const std::string& name : test::example_cam_names())
+    if (name != "cylindrical") designs.push_back(test::example_cam_design(name));
+  std::mt19937 rng(20261206);
+  for (int k = 0; k < 20; ++k) designs.push_back(test::random_cam_design(rng));
+  for (const CamDesign& design : designs) {
+    const PolarFunction f = cam_polar_function(make_plate_cam(design));
+    double worst = 0.0;
+    for (int i = 0; i < 4000; ++i) {
+      const double psi = f.start + (f.end - f.start) * (i + 0.31) / 4000;
+      worst = std::max(worst, std::abs(f(psi) - polar(f, psi, 0)));
+    }
+    EXPECT_LT(worst, 2e-12) << "design " << &design - designs.data();
+  }
 }
 
 // A flat-faced follower with s = d(1 - cos θ) is driven by a circle of radius Rc = Rb + d whose
