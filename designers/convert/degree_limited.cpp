@@ -204,6 +204,19 @@ ProfileFitOptions minimax_options(int p, const LimitedEffort& effort) {
   return {2 * p + 2, kSlide, effort.lawson_steps};
 }
 
+// The samples per span of the fits that predict and try (p + 5 rather than 2p + 2 from degree 4
+// on): for the trials (bisection and removals) with 20 removal tries, the same 1418 and 1971
+// control points on the 66 peer_counts rows as 2p + 2, p + 4 gave 1422 and 1983; for the
+// placements' minimax fits, the same 1419 and 1971 with 8 tries.
+int trial_samples(int p) { return std::min(2 * p + 2, p + 5); }
+
+// A placement's minimax fit, whose error predicts the control points.
+ProfileFitOptions predicting_options(int p, const LimitedEffort& effort) {
+  ProfileFitOptions out = minimax_options(p, effort);
+  out.per_span = trial_samples(p);
+  return out;
+}
+
 // A refit whose error is within kNearMiss of the target: Lawson's steps to about convergence (the
 // minimax gains a few per cent after the effort's steps; 40 take the hemispherical head's single
 // sextic from 1.022 to 0.938 µm, against 0.99 needed at 1 µm).
@@ -291,7 +304,7 @@ Placement place_knots(const PolarFunction& R, Ends ends, const ProfileTable& tab
   out.spans = f.space.spans();
   throw_if_stopped(stop);
   out.minimax = fit_on(equidistribute(out.breaks, out.mass, out.spans, out.fixed), shape, table, p,
-                       minimax_options(p, effort), kShare * tol);
+                       predicting_options(p, effort), kShare * tol);
   const double spans = std::max<double>(
       out.fewest, out.spans * std::pow(out.minimax->max / (kShare * tol), 1.0 / (p + 1)));
   // A mirrored curve has the mirror images of the spans too, but for the one across the line.
@@ -316,10 +329,8 @@ LimitedCurve fit_by_need(const PolarFunction& R, const ProfileTable& table, cons
   // one,
   ProfileFitOptions trial = minimax;
   trial.target = kShare * tol;
-  // and on fewer samples (p + 5 per span rather than 2p + 2 from degree 4 on: with 20 removal
-  // tries, the same 1418 and 1971 control points on the 66 peer_counts rows; p + 4 gave 1422 and
-  // 1983).
-  trial.per_span = std::min(2 * p + 2, p + 5);
+  // and on fewer samples (trial_samples).
+  trial.per_span = trial_samples(p);
   const auto fail = [&] {
     return NumericalError("degree-limited profile: no degree-" + std::to_string(p) +
                           " spline with up to " + std::to_string(kMaxSpans) + " spans meets " +
