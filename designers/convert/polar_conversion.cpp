@@ -155,6 +155,7 @@ PolarConversion convert_polar_function(const PolarFunction& R, const ConversionO
   Task<std::optional<LimitedCurve>> refitting;
   if (options.compaction == Compaction::refit)
     refitting = run_task([&R, &options, stop = stop_refit.get_token()] {
+      if (stop.stop_requested()) return std::optional<LimitedCurve>();  // the product failed first
       return fewest_control_points_refit(R, options.tolerance, true, stop);
     });
   struct StopOnExit {

@@ -13,8 +13,8 @@ namespace polarform {
 
 class ProfileTable {
  public:
-  // R's nodes are evaluated on two threads: R's derivatives must be safe to call concurrently
-  // (every PolarFunction's are: pure functions of immutable data).
+  // R's nodes are evaluated on every core (task_pool.h): R's derivatives must be safe to call
+  // concurrently (every PolarFunction's are: pure functions of immutable data).
   explicit ProfileTable(const PolarFunction& R, int intervals = 4096);
 
   // R(ψ) and R'(ψ) into out[0..1]; ψ wrapped into the domain (closed) or clamped to it (open).
