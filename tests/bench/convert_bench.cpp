@@ -1,11 +1,12 @@
 // Benchmarks of the cam conversion path: synthesis + conversion + verification of the roller
 // example at 1 µm (issue 14's target: <= 5 ms; with the refit that makes the profile compact it
-// measured 9.2 ms wall on the 2-core CI machine for 22 control points — the refit runs on both
-// cores beside the product C = F·B, which alone takes 2.2 ms; callgrind counts 109 M
+// measured 5.3–6.1 ms wall (medians of 5, as the VM's speed varied; single runs from 4.6 ms) on
+// the 2-core CI machine for 22 control points — the refit's degrees and fits run as tasks on
+// both cores beside the product C = F·B, which alone takes 1.4–1.5 ms; callgrind counts 102 M
 // instructions for the whole program run, about 30 M of them the program's start, against 260 M
 // before the fits got cheaper, the placement kept its best round and the knot removals went the
-// most removable first), one UI design update at 10 µm (target < 2 ms, measured 6.2 ms) and the
-// degree-3 profile at 1 µm (7.3–8.8 ms).
+// most removable first), one UI design update at 10 µm (target < 2 ms, measured 4.2–5.3 ms) and
+// the degree-3 profile at 1 µm (8.2–9.6 ms).
 #include <benchmark/benchmark.h>
 
 #include <numbers>
