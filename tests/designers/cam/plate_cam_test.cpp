@@ -55,21 +55,37 @@ double domain_angle(const PolarFunction& f, const Eigen::Vector2d& p) {
 }
 
 // R(ψ) alone (first order from the Hermite start of θ(ψ)) agrees with R from the Newton-inverted
-// θ (the derivatives' path) to round-off, on the plate examples and 20 random designs.
+// θ (the derivatives' path) to round-off: on the plate examples, 20 random designs (translating
+// followers) and swing-arm roller and flat-faced followers on either side.
 TEST(PlateCam, RAloneAgreesWithTheNewtonInversion) {
-  std::vector<CamDesign> designs;
+  std::vector<PlateCam> cams;
   for (const std::string& name : test::example_cam_names())
-    if (name != "cylindrical") designs.push_back(test::example_cam_design(name));
+    if (name != "cylindrical") cams.push_back(make_plate_cam(test::example_cam_design(name)));
   std::mt19937 rng(20261206);
-  for (int k = 0; k < 20; ++k) designs.push_back(test::random_cam_design(rng));
-  for (const CamDesign& design : designs) {
-    const PolarFunction f = cam_polar_function(make_plate_cam(design));
+  for (int k = 0; k < 20; ++k) cams.push_back(make_plate_cam(test::random_cam_design(rng)));
+  const CamProgram swing({segment(SegmentKind::Dwell, 0, 80, 0, MotionLaw::Cycloidal),
+                          segment(SegmentKind::Rise, 80, 190, 10, MotionLaw::Cycloidal),
+                          segment(SegmentKind::Dwell, 190, 250, 0, MotionLaw::Cycloidal),
+                          segment(SegmentKind::Return, 250, 360, 10, MotionLaw::Polynomial4567)});
+  for (int side : {1, -1}) {
+    Follower roller;
+    roller.kind = FollowerKind::OscillatingRoller;
+    roller.roller_radius = 8, roller.pivot_distance = 110, roller.arm_length = 75;
+    roller.pivot_side = side;
+    cams.emplace_back(swing, roller, 42, Rotation::Clockwise);
+    Follower face;
+    face.kind = FollowerKind::OscillatingFlatFaced;
+    face.pivot_distance = 130, face.face_offset = 0, face.pivot_side = side;
+    cams.emplace_back(swing, face, 60);
+  }
+  for (std::size_t c = 0; c < cams.size(); ++c) {
+    const PolarFunction f = cam_polar_function(cams[c]);
     double worst = 0.0;
     for (int i = 0; i < 4000; ++i) {
       const double psi = f.start + (f.end - f.start) * (i + 0.31) / 4000;
       worst = std::max(worst, std::abs(f(psi) - polar(f, psi, 0)));
     }
-    EXPECT_LT(worst, 2e-12) << "design " << &design - designs.data();
+    EXPECT_LT(worst, 2e-12) << "cam " << c;
   }
 }
 
