@@ -234,9 +234,8 @@ PolarFunction traced_polar_function(CamTrace trace) {
       curve_jets(t, t.segment[i], theta0, 1, xy);
       const double g = psi_residual(t, i, xy, psi);
       if (std::abs(g) <= kFirstOrder) {
-        const double r = std::hypot(xy[0][0], xy[1][0]);
-        const double dr = (xy[0][0] * xy[0][1] + xy[1][0] * xy[1][1]) / r;
-        out[0] = r - g * dr / psi_rate(xy);
+        const Jet r = sqrt(xy[0] * xy[0] + xy[1] * xy[1]);
+        out[0] = r[0] - g * r[1] / psi_rate(xy);
         return;
       }
     }

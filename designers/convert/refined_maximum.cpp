@@ -52,10 +52,11 @@ Maximum refined_maximum(const std::function<double(double)>& f, const std::vecto
                     [](const Sample& x, const Sample& y) { return x.value > y.value; });
   best = {peaks.front().t, peaks.front().value};
   for (int k = 0; k < count; ++k) {
-    // Brent minimises −f, from the peak and its neighbours, to 1e-4 of the bracket: the value
-    // then lies within about 1e-8 of the peak's (relative), and the search takes about 6
-    // evaluations instead of 12 at 1e-7 of the bracket, where round-off in f had it fall back on
-    // golden-section steps (measured on the roller's conversion at 1 µm).
+    // Brent minimises −f, from the peak and its neighbours, to 1e-4 of the bracket: near a
+    // smooth peak the value's error goes with the square of that (refined_maximum_test: within
+    // 1e-12 of a dense scan's), and the search takes about 6 evaluations instead of 12 at 1e-7
+    // of the bracket, where round-off in f had it fall back on golden-section steps (measured on
+    // the roller's conversion at 1 µm: 938 evaluations against 1741).
     const Sample& s = peaks[k];
     if (!(s.hi > s.lo)) continue;
     const BrentStart start{s.t, -s.value, -s.f_lo, -s.f_hi};
