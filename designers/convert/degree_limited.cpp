@@ -137,9 +137,11 @@ std::vector<double> need(const Fit& f) {
   return mass;
 }
 
-// The lowest order k (1..3) of R's derivatives that jumps between their values at `left_at` (just
+// The lowest order k (1..4) of R's derivatives that jumps between their values at `left_at` (just
 // before a point, by h) and at `right_at` (just after it), each taken back to the point along its
-// Taylor series; 0 if none does.
+// Taylor series; 0 if none does. R gives derivatives up to the third: the fourth's values on either
+// side are one-sided difference quotients of R‴ over δ and 2δ, combined (Richardson) so that the
+// fifth derivative's share, δ·R⁽⁵⁾, cancels from their difference.
 int jump_order(const PolarFunction& R, double left_at, double right_at, double h) {
   double left[4], right[4];
   R.derivatives(left_at, 3, left);
@@ -151,14 +153,25 @@ int jump_order(const PolarFunction& R, double left_at, double right_at, double h
     const double r = right[k] - (k < 3 ? h * right[k + 1] : 0.0);
     if (std::abs(l - r) > 1e-6 * scale) return k;
   }
-  return 0;
+  const auto third = [&R](double at) {
+    double d[4];
+    R.derivatives(at, 3, d);
+    return d[3];
+  };
+  const double delta = 1e3 * h;
+  const double l1 = (left[3] - third(left_at - delta)) / delta,
+               r1 = (third(right_at + delta) - right[3]) / delta;
+  const double l2 = (left[3] - third(left_at - 2 * delta)) / (2 * delta),
+               r2 = (third(right_at + 2 * delta) - right[3]) / (2 * delta);
+  const double jump = 2 * (r1 - l1) - (r2 - l2);
+  return std::abs(jump) > 1e-6 * (scale + std::abs(l1) + std::abs(r1)) ? 4 : 0;
 }
 
 // The multiplicity of a degree-p knot that leaves the spline C^(k−1) where R's k-th derivative
 // jumps (k >= 1), as smooth as R there; simple where R is smooth (k = 0).
 int multiplicity_for(int k, int p) { return k == 0 ? 1 : std::clamp(p - (k - 1), 1, p); }
 
-// The breakpoints of R where a derivative of order 1..min(p, 3) jumps, with that order: there a
+// The breakpoints of R where a derivative of order 1..min(p, 4) jumps, with that order: there a
 // knot lets the spline follow the jump; elsewhere (a breakpoint of a smooth R) the knots are placed
 // by need only.
 std::vector<std::pair<double, int>> jump_breakpoints(const PolarFunction& R, int p) {
@@ -167,7 +180,7 @@ std::vector<std::pair<double, int>> jump_breakpoints(const PolarFunction& R, int
   for (double b : R.breakpoints) {
     if (!(b > R.start && b < R.end)) continue;
     const int k = jump_order(R, b - h, b + h, h);
-    if (k > 0 && k <= std::min(p, 3)) out.emplace_back(b, k);
+    if (k > 0 && k <= std::min(p, 4)) out.emplace_back(b, k);
   }
   return out;
 }

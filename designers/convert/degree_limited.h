@@ -42,9 +42,9 @@ struct LimitedCurve {
 };
 
 // A tolerance-driven least-squares B-spline with knots placed by need (periodic when R is closed,
-// C^{p-1} across the seam, or C^{k-1} where R's derivative of order k <= 3 jumps there; an open
+// C^{p-1} across the seam, or C^{k-1} where R's derivative of order k <= 4 jumps there; an open
 // one keeps R's end points): knots equidistributing the measured error (de Boor), a knot wherever
-// a derivative of order k <= min(p, 3) of R jumps (of multiplicity p − (k − 1): C^(k−1) there, as
+// a derivative of order k <= min(p, 4) of R jumps (of multiplicity p − (k − 1): C^(k−1) there, as
 // R is), the fewest spans on that density whose minimax fit meets tol, knot removal by refit,
 // then the result measured against R itself (a span split where it misses). The fits let the curve
 // slide along the profile and are pushed toward the minimax radial error (profile_fit.h). A

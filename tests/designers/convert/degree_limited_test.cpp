@@ -2,8 +2,8 @@
 // examples at several degrees and tolerances the result meets the tolerance by the tests' own
 // dense measurement, a closed profile is periodic and C^(p−1) across the seam, an open one keeps
 // the profile's end points, knots placed by need beat the uniform "spline through points" export,
-// and a breakpoint where R's third derivative jumps is a knot. (The counts against Open CASCADE
-// for every example are asserted in tests/jobs/study/peer_counts_test.cpp.)
+// and a breakpoint where R's third or fourth derivative jumps is a knot. (The counts against Open
+// CASCADE for every example are asserted in tests/jobs/study/peer_counts_test.cpp.)
 #include "designers/convert/degree_limited.h"
 
 #include <gtest/gtest.h>
@@ -61,9 +61,10 @@ TEST(DegreeLimited, MeetsTheToleranceByDenseSamplingAtEveryDegree) {
 }
 
 // A closed profile is periodic: C^(p−1) across the seam where R is smooth there, and as smooth as
-// R where it is not (flat_faced's 3-4-5 rise starts at 0°: its third derivative jumps, C2).
+// R where it is not (flat_faced's 3-4-5 rise starts at 0°: its third derivative jumps, C2;
+// roller's 4-5-6-7 rise: its fourth derivative jumps, C3).
 TEST(DegreeLimited, ClosedProfileIsPeriodicAndAsSmoothAcrossTheSeamAsR) {
-  const std::map<std::string, int> seam_continuity = {{"flat_faced", 2}};
+  const std::map<std::string, int> seam_continuity = {{"flat_faced", 2}, {"roller", 3}};
   for (const std::string& name : kPlateCams)
     for (int degree : {3, 5}) {
       SCOPED_TRACE(name + " degree " + std::to_string(degree));
@@ -187,6 +188,44 @@ TEST(DegreeLimited, AJumpOfTheThirdDerivativeIsAKnotAPlainBreakpointNeedNotBe) {
       const auto right = c.curve.derivatives(std::numbers::pi + h, 3);
       EXPECT_LE((left[2] - right[2]).norm(), 1e-4 * left[2].norm());
       EXPECT_GT((left[3] - right[3]).norm(), 1.0);  // R‴ jumps by 24
+    }
+  }
+}
+
+// A jump of R's fourth derivative (a 4-5-6-7 rise's ends; R gives derivatives up to the third) is a
+// knot of multiplicity p − 3 from degree 4 on, where the curve is C3 as R is.
+TEST(DegreeLimited, AJumpOfTheFourthDerivativeIsAKnotFromDegreeFourOn) {
+  // r = 50 + 2 σ sin⁴ψ, σ = ±1 on either side of π, closed: C3, its fourth derivative jumps (24 to
+  // −24) at ψ = π and across the seam; the breakpoint listed at ψ = 1 is smooth.
+  PolarFunction R;
+  R.start = 0.0;
+  R.end = 2 * std::numbers::pi;
+  R.breakpoints = {1.0, std::numbers::pi};
+  R.derivatives = [](double t, int d, double* out) {
+    const double s = std::sin(t), c = std::cos(t), sigma = t < std::numbers::pi ? 1.0 : -1.0;
+    const double all[4] = {50 + 2 * sigma * s * s * s * s, 8 * sigma * s * s * s * c,
+                           2 * sigma * (12 * s * s * c * c - 4 * s * s * s * s),
+                           2 * sigma * (24 * s * c * c * c - 40 * s * s * s * c)};
+    for (int k = 0; k <= d; ++k) out[k] = all[k];
+  };
+  for (int p : {3, 4, 5, 6}) {
+    SCOPED_TRACE("degree " + std::to_string(p));
+    const LimitedCurve c = approximate_polar_curve(R, p, 1e-4);
+    EXPECT_LE(dense_distance(c.curve, R), 1e-4);
+    int at_pi = 0;
+    bool at_one = false;
+    for (const Breakpoint& k : breakpoints(c.curve.knots())) {
+      if (k.value == std::numbers::pi) at_pi = k.multiplicity;
+      at_one = at_one || k.value == 1.0;
+    }
+    if (p >= 4) EXPECT_EQ(at_pi, p - 3);
+    EXPECT_FALSE(at_one);
+    if (p >= 5) {
+      const double h = 1e-9;
+      const auto left = c.curve.derivatives(std::numbers::pi - h, 4);
+      const auto right = c.curve.derivatives(std::numbers::pi + h, 4);
+      EXPECT_LE((left[3] - right[3]).norm(), 1e-4 * left[3].norm());
+      EXPECT_GT((left[4] - right[4]).norm(), 1.0);  // R⁗ jumps by 48
     }
   }
 }

@@ -591,7 +591,7 @@ edit
 }
 
 // The project's compaction is the studio's: the roller refitted by default (the product's 110
-// control points to 22, report.json's steps "product" → "refit"), left as the product with
+// control points to 23, report.json's steps "product" → "refit"), left as the product with
 // compaction="none".
 TEST_F(StudioTest, TheProjectsCompactionDecidesTheProfile) {
   std::string none = slurp(kExamples / "cams" / "roller.xml");
@@ -601,7 +601,7 @@ TEST_F(StudioTest, TheProjectsCompactionDecidesTheProfile) {
   const fs::path project = write("roller_none.xml", none);
   const fs::path script = write("numbers.txt", "numbers cam\n");
   for (const auto& [path, steps, points] :
-       {std::tuple{kExamples / "cams" / "roller.xml", "refit", 22},
+       {std::tuple{kExamples / "cams" / "roller.xml", "refit", 23},
         {project, "knot removal", 110}}) {
     SCOPED_TRACE(path.string());
     const StudioRun r = run_studio("--project '" + path.string() + "' --script '" +
