@@ -3,9 +3,11 @@
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <numbers>
 #include <numeric>
 #include <optional>
@@ -382,6 +384,8 @@ LimitedCurve fit_by_need(const PolarFunction& R, const ProfileTable& table, cons
   // 2^(p+4)·tol ends them: tried in the earlier order (smallest neighbouring span error first) on
   // the 66 peer_counts rows, such removals met the tolerance in 9 of 525 tries. The trial fits
   // give up their Lawson steps early when they are far off (ProfileFitOptions::target).
+  // Tries begun beside others and no longer wanted: waited for on leaving (by then long done).
+  std::vector<Task<std::optional<Fit>>> abandoned;
   if (place.shape.ends == Ends::mirrored) {
     const Shape smooth{Ends::mirrored_smooth, place.shape.multiple};
     Fit c = fit_on(best.space.breaks(), smooth, table, p, trial, kShare * tol);
@@ -401,18 +405,53 @@ LimitedCurve fit_by_need(const PolarFunction& R, const ProfileTable& table, cons
     };
     take_bounds();
     const double hopeless = std::ldexp(kShare * tol, p + 4);
-    for (std::size_t tries = 0; tries < effort.removal_tries && !untried.empty(); ++tries) {
-      throw_if_stopped(stop);
-      if (best.space.spans() - 1 < fewest) break;
-      const auto least = std::min_element(untried.begin(), untried.end(),
-                                          [](auto& x, auto& y) { return x.second < y.second; });
-      if (!(least->second <= hopeless)) break;
-      const double at = least->first;
-      untried.erase(least);
+    // The untried break of the least bound, unless that is beyond hopeless.
+    const auto least = [&]() -> std::optional<std::vector<std::pair<double, double>>::iterator> {
+      const auto l = std::min_element(untried.begin(), untried.end(),
+                                      [](auto& x, auto& y) { return x.second < y.second; });
+      if (l == untried.end() || !(l->second <= hopeless)) return std::nullopt;
+      return l;
+    };
+    // Best's breaks without `at`.
+    const auto without = [&](double at) {
       std::vector<double> fewer = best.space.breaks();
       fewer.erase(std::find(fewer.begin(), fewer.end(), at));
-      Fit c = fit_on(std::move(fewer), shape_of(best.space), table, p, trial, kShare * tol);
-      if (c.max <= kShare * tol) best = std::move(c), take_bounds();
+      return fewer;
+    };
+    const auto accept = [&](Fit& c) {
+      if (!(c.max <= kShare * tol)) return false;
+      best = std::move(c), take_bounds();
+      return true;
+    };
+    for (std::size_t tries = 0; tries < effort.removal_tries; ++tries) {
+      throw_if_stopped(stop);
+      if (best.space.spans() - 1 < fewest) break;
+      const auto l = least();
+      if (!l) break;
+      const double at = (*l)->first;
+      untried.erase(*l);
+      // The try after this one (the next least bound, as if this one fails) runs beside it, a
+      // task with inputs of its own, and counts only if this one fails: the same tries in the
+      // same order as one at a time. Abandoned when this one succeeds (skipped if not started).
+      const auto wanted = std::make_shared<std::atomic<bool>>(true);
+      std::optional<std::pair<double, Task<std::optional<Fit>>>> next;
+      if (const auto n = least(); n && tries + 1 < effort.removal_tries)
+        next.emplace((*n)->first,
+                     run_task([fewer = without((*n)->first), shape = shape_of(best.space), wanted,
+                               &table, p, trial, tol]() -> std::optional<Fit> {
+                       if (!*wanted) return std::nullopt;
+                       return fit_on(fewer, shape, table, p, trial, kShare * tol);
+                     }));
+      Fit c = fit_on(without(at), shape_of(best.space), table, p, trial, kShare * tol);
+      if (accept(c)) {
+        if (next) *wanted = false, abandoned.push_back(std::move(next->second));
+      } else if (next) {
+        ++tries;
+        untried.erase(std::find_if(untried.begin(), untried.end(),
+                                   [&](auto& u) { return u.first == next->first; }));
+        Fit d = *next->second.get();
+        accept(d);
+      }
     }
   }
 
