@@ -8,59 +8,76 @@
 
 namespace polarform {
 
-BorderedBandCholesky::BorderedBandCholesky(int size, int bandwidth, int border)
-    : size_(size), w_(bandwidth), m_(border), n_(size - border) {
-  if (size < 0 || bandwidth < 0 || border < 0 || border > size)
+BorderedBandCholesky::BorderedBandCholesky(int blocks, int bandwidth, int border)
+    : size_(blocks), w_(bandwidth), m_(border), n_(blocks - border) {
+  if (blocks < 0 || bandwidth < 0 || border < 0 || border > blocks)
     throw InputError("bordered band Cholesky: bad shape");
-  band_.assign(static_cast<std::size_t>(n_) * (w_ + 1), 0.0);
-  border_.assign(static_cast<std::size_t>(m_) * size_, 0.0);
+  band_.assign(static_cast<std::size_t>(n_) * (w_ + 1), Eigen::Matrix2d::Zero());
+  border_.assign(static_cast<std::size_t>(m_) * size_, Eigen::Matrix2d::Zero());
 }
 
-void BorderedBandCholesky::outside_band() {
-  throw InputError("bordered band Cholesky: entry outside the band");
+Eigen::Matrix2d& BorderedBandCholesky::lower(int I, int J) {
+  if (!(J >= 0 && J <= I && I < size_) || (I < n_ && I - J > w_))
+    throw InputError("bordered band Cholesky: block outside the band");
+  return I >= n_ ? border(I - n_, J) : band(I, J);
+}
+
+void BorderedBandCholesky::subtract(Eigen::Matrix2d& S, const Eigen::Matrix2d& X,
+                                    const Eigen::Matrix2d& Y) {
+  for (int c = 0; c < 2; ++c) {
+    S.col(c) -= X.col(0) * Y(c, 0);
+    S.col(c) -= X.col(1) * Y(c, 1);
+  }
+}
+
+void BorderedBandCholesky::divide(Eigen::Matrix2d& S, const Eigen::Matrix2d& diagonal,
+                                  int J) const {
+  S.col(0) *= inverse_diagonal_[2 * J];
+  S.col(1) -= S.col(0) * diagonal(1, 0);
+  S.col(1) *= inverse_diagonal_[2 * J + 1];
+}
+
+bool BorderedBandCholesky::root(Eigen::Matrix2d& S, int I) {
+  if (!(S(0, 0) > 0)) return false;
+  S(0, 0) = std::sqrt(S(0, 0));
+  inverse_diagonal_[2 * I] = 1 / S(0, 0);
+  S(1, 0) *= inverse_diagonal_[2 * I];
+  S(1, 1) -= S(1, 0) * S(1, 0);
+  if (!(S(1, 1) > 0)) return false;
+  S(1, 1) = std::sqrt(S(1, 1));
+  inverse_diagonal_[2 * I + 1] = 1 / S(1, 1);
+  S(0, 1) = 0.0;
+  return true;
 }
 
 // Golub & Van Loan Alg. 4.3.5 (band Cholesky, row by row), then the border rows against the band
-// and against each other.
+// and against each other; by blocks, each scalar entry A(i, j) − Σ_k L(i, k)·L(j, k) over k in
+// increasing order (the zero terms left of the band skipped).
 bool BorderedBandCholesky::factorize() {
-  inverse_diagonal_.assign(static_cast<std::size_t>(size_), 0.0);
-  // L(i, k) = L[row(i) − k] (band() stores row i backwards from its diagonal).
-  double* L = band_.data();
-  const auto row = [&](int i) { return static_cast<std::ptrdiff_t>(i) * (w_ + 2); };
-  for (int i = 0; i < n_; ++i) {
-    const std::ptrdiff_t ri = row(i);
-    for (int j = std::max(0, i - w_); j <= i; ++j) {
-      const std::ptrdiff_t rj = row(j);
-      double s = L[ri - j];
-      for (int k = std::max(0, i - w_); k < j; ++k) s -= L[ri - k] * L[rj - k];
-      if (j < i) {
-        L[ri - j] = s * inverse_diagonal_[j];
-      } else {
-        if (!(s > 0)) return false;
-        L[ri - i] = std::sqrt(s);
-        inverse_diagonal_[i] = 1 / L[ri - i];
-      }
+  inverse_diagonal_.assign(2 * static_cast<std::size_t>(size_), 0.0);
+  for (int I = 0; I < n_; ++I)
+    for (int J = std::max(0, I - w_); J <= I; ++J) {
+      Eigen::Matrix2d& S = band(I, J);
+      for (int K = std::max(0, I - w_); K < J; ++K) subtract(S, band(I, K), band(J, K));
+      if (J < I)
+        divide(S, band(J, J), J);
+      else if (!root(S, I))
+        return false;
     }
-  }
-  for (int r = 0; r < m_; ++r) {
-    double* Br = &border(r, 0);
-    for (int j = 0; j < n_; ++j) {
-      const std::ptrdiff_t rj = row(j);
-      double s = Br[j];
-      for (int k = std::max(0, j - w_); k < j; ++k) s -= Br[k] * L[rj - k];
-      Br[j] = s * inverse_diagonal_[j];
+  for (int R = 0; R < m_; ++R) {
+    Eigen::Matrix2d* B = &border(R, 0);
+    for (int J = 0; J < n_; ++J) {
+      for (int K = std::max(0, J - w_); K < J; ++K) subtract(B[J], B[K], band(J, K));
+      divide(B[J], band(J, J), J);
     }
-    for (int c = 0; c <= r; ++c) {
-      const double* Bc = &border(c, 0);
-      double s = Br[n_ + c];
-      for (int k = 0; k < n_ + c; ++k) s -= Br[k] * Bc[k];
-      if (c < r) {
-        Br[n_ + c] = s * inverse_diagonal_[n_ + c];
-      } else {
-        if (!(s > 0)) return false;
-        Br[n_ + r] = std::sqrt(s);
-        inverse_diagonal_[n_ + r] = 1 / Br[n_ + r];
-      }
+    for (int C = 0; C <= R; ++C) {
+      const Eigen::Matrix2d* Bc = &border(C, 0);
+      Eigen::Matrix2d& S = B[n_ + C];
+      for (int K = 0; K < n_ + C; ++K) subtract(S, B[K], Bc[K]);
+      if (C < R)
+        divide(S, Bc[n_ + C], n_ + C);
+      else if (!root(S, n_ + R))
+        return false;
     }
   }
   return true;
@@ -68,29 +85,41 @@ bool BorderedBandCholesky::factorize() {
 
 Eigen::VectorXd BorderedBandCholesky::solve(const Eigen::VectorXd& b) const {
   Eigen::VectorXd x = b;
-  // L·y = b.
-  for (int i = 0; i < n_; ++i) {
-    double s = x(i);
-    for (int k = std::max(0, i - w_); k < i; ++k) s -= band(i, k) * x(k);
-    x(i) = s * inverse_diagonal_[i];
-  }
-  for (int r = 0; r < m_; ++r) {
-    double s = x(n_ + r);
-    for (int k = 0; k < n_ + r; ++k) s -= border(r, k) * x(k);
-    x(n_ + r) = s * inverse_diagonal_[n_ + r];
-  }
-  // Lᵀ·x = y: the border's unknowns first.
-  for (int r = m_ - 1; r >= 0; --r) {
-    double s = x(n_ + r);
-    for (int c = r + 1; c < m_; ++c) s -= border(c, n_ + r) * x(n_ + c);
-    x(n_ + r) = s * inverse_diagonal_[n_ + r];
-  }
-  for (int i = n_ - 1; i >= 0; --i) {
-    double s = x(i);
-    for (int k = i + 1; k <= std::min(n_ - 1, i + w_); ++k) s -= band(k, i) * x(k);
-    for (int r = 0; r < m_; ++r) s -= border(r, i) * x(n_ + r);
-    x(i) = s * inverse_diagonal_[i];
-  }
+  // L·y = b, row by row: block row I's blocks from column `from` on (at(K) = L(I, K)).
+  const auto forward = [&](int I, int from, const auto& at) {
+    for (int r = 0; r < 2; ++r) {
+      double s = x(2 * I + r);
+      for (int K = from; K < I; ++K) {
+        s -= at(K)(r, 0) * x(2 * K);
+        s -= at(K)(r, 1) * x(2 * K + 1);
+      }
+      if (r == 1) s -= at(I)(1, 0) * x(2 * I);
+      x(2 * I + r) = s * inverse_diagonal_[2 * I + r];
+    }
+  };
+  for (int I = 0; I < n_; ++I)
+    forward(I, std::max(0, I - w_), [&](int K) -> const Eigen::Matrix2d& { return band(I, K); });
+  for (int R = 0; R < m_; ++R)
+    forward(n_ + R, 0, [&](int K) -> const Eigen::Matrix2d& { return border(R, K); });
+  // Lᵀ·x = y, row by row backwards: the border's unknowns first.
+  for (int R = m_ - 1; R >= 0; --R)
+    for (int r = 1; r >= 0; --r) {
+      double s = x(2 * (n_ + R) + r);
+      if (r == 0) s -= border(R, n_ + R)(1, 0) * x(2 * (n_ + R) + 1);
+      for (int C = R + 1; C < m_; ++C)
+        for (int c = 0; c < 2; ++c) s -= border(C, n_ + R)(c, r) * x(2 * (n_ + C) + c);
+      x(2 * (n_ + R) + r) = s * inverse_diagonal_[2 * (n_ + R) + r];
+    }
+  for (int I = n_ - 1; I >= 0; --I)
+    for (int r = 1; r >= 0; --r) {
+      double s = x(2 * I + r);
+      if (r == 0) s -= band(I, I)(1, 0) * x(2 * I + 1);
+      for (int K = I + 1; K <= std::min(n_ - 1, I + w_); ++K)
+        for (int c = 0; c < 2; ++c) s -= band(K, I)(c, r) * x(2 * K + c);
+      for (int R = 0; R < m_; ++R)
+        for (int c = 0; c < 2; ++c) s -= border(R, I)(c, r) * x(2 * (n_ + R) + c);
+      x(2 * I + r) = s * inverse_diagonal_[2 * I + r];
+    }
   return x;
 }
 

@@ -1,51 +1,55 @@
-// Cholesky factorisation A = L·Lᵀ of a symmetric positive definite matrix that is banded apart
-// from a border: entries only within `bandwidth` of the diagonal, except in the last `border`
-// rows and columns, which may be full. A periodic spline's normal equations take this form when
-// the last p control values are the border (their basis functions wrap to the first spans). The
-// band costs O(N·w²), the border O(m·N·w + m²·N) (Golub & Van Loan 2013, §4.3.5 band Cholesky,
-// with the border eliminated last).
+// Cholesky factorisation A = L·Lᵀ of a symmetric positive definite matrix of 2 × 2 blocks that is
+// banded apart from a border: blocks only within `bandwidth` blocks of the diagonal, except in the
+// last `border` block rows and columns, which may be full. A plane spline's normal equations in
+// its control values (x_j, y_j) take this form, a periodic spline's last p control values the
+// border (their basis functions wrap to the first spans). The band costs O(N·w²), the border
+// O(m·N·w + m²·N) (Golub & Van Loan 2013, §4.3.5 band Cholesky, row by row, with the border
+// eliminated last), here by blocks: each entry takes the scalar algorithm's operations in its
+// order, so that the factor is the scalar one to the last bit, at a fraction of the index work.
 #pragma once
 
 #include <Eigen/Core>
-#include <utility>
 #include <vector>
 
 namespace polarform {
 
 class BorderedBandCholesky {
  public:
-  // size: the order of A; bandwidth: w, the band's half width; border: m, 0 <= m <= size.
-  BorderedBandCholesky(int size, int bandwidth, int border);
+  // blocks: N, the order of A in 2 × 2 blocks; bandwidth: w, the band's half width in blocks;
+  // border: m, 0 <= m <= N.
+  BorderedBandCholesky(int blocks, int bandwidth, int border);
 
-  // A(i, j) += value (and A(j, i): one call for the pair); (i, j) must lie within the band or the
-  // border.
-  void add(int i, int j, double value) {
-    if (i < j) std::swap(i, j);
-    if (i >= n_)
-      border(i - n_, j) += value;
-    else if (i - j <= w_)
-      band(i, j) += value;
-    else
-      outside_band();
-  }
+  // Block (I, J) of A's lower triangle, I >= J, within the band or the border (InputError
+  // otherwise); zero until set. Of a diagonal block only the lower triangle counts.
+  Eigen::Matrix2d& lower(int I, int J);
   // Factorises A in place; false when A is not (numerically) positive definite.
   bool factorize();
-  // x with A·x = b, after factorize().
+  // x with A·x = b (2N entries), after factorize().
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
 
  private:
-  [[noreturn]] static void outside_band();
-  double& band(int i, int k) { return band_[static_cast<std::size_t>(i) * (w_ + 1) + (i - k)]; }
-  double band(int i, int k) const {
-    return band_[static_cast<std::size_t>(i) * (w_ + 1) + (i - k)];
+  // Block row I < n_: A(I, I − w .. I), stored backwards from the diagonal, then L.
+  Eigen::Matrix2d& band(int I, int J) {
+    return band_[static_cast<std::size_t>(I) * (w_ + 1) + (I - J)];
   }
-  double& border(int r, int k) { return border_[static_cast<std::size_t>(r) * size_ + k]; }
-  double border(int r, int k) const { return border_[static_cast<std::size_t>(r) * size_ + k]; }
+  const Eigen::Matrix2d& band(int I, int J) const {
+    return band_[static_cast<std::size_t>(I) * (w_ + 1) + (I - J)];
+  }
+  // Border block row R (A's block row n_ + R): A(n_ + R, 0 .. N − 1), then L.
+  Eigen::Matrix2d& border(int R, int J) { return border_[static_cast<std::size_t>(R) * size_ + J]; }
+  const Eigen::Matrix2d& border(int R, int J) const {
+    return border_[static_cast<std::size_t>(R) * size_ + J];
+  }
+  // S −= X·Yᵀ, entry by entry in the scalar order (X's first column, then its second).
+  static void subtract(Eigen::Matrix2d& S, const Eigen::Matrix2d& X, const Eigen::Matrix2d& Y);
+  // S ← S·L(J, J)⁻ᵀ by forward substitution: an off-diagonal block of L from what is left of A's.
+  void divide(Eigen::Matrix2d& S, const Eigen::Matrix2d& diagonal, int J) const;
+  // S ← the Cholesky factor of the diagonal block S (its lower triangle); false unless positive.
+  bool root(Eigen::Matrix2d& S, int I);
 
-  int size_, w_, m_, n_;        // n_ = size − m: the banded part's order
-  std::vector<double> band_;    // row i: A(i, i − w .. i) of the banded part, then L
-  std::vector<double> border_;  // row r: A(n_ + r, 0 .. size − 1), then L
-  std::vector<double> inverse_diagonal_;  // 1 / L(i, i), after factorize()
+  int size_, w_, m_, n_;  // n_ = size − m: the banded part's order, in blocks
+  std::vector<Eigen::Matrix2d> band_, border_;
+  std::vector<double> inverse_diagonal_;  // 1 / L(i, i) of the 2N scalar rows, after factorize()
 };
 
 }  // namespace polarform

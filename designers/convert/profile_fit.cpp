@@ -205,15 +205,22 @@ Eigen::MatrixXd solve(const SplineSpace& space, const std::vector<Sample>& ss,
       if (h.held[c]) rhs(2 * h.index + c) = 0.0;
   }
   // The last p control values of a periodic space wrap to its first spans: they form the border.
-  BorderedBandCholesky A(2 * n, 2 * p + 1, space.periodic() ? 2 * p : 0);
+  // Block (J, K) of the upper band is block (K, J) of the lower triangle transposed, or, once K
+  // wraps below J, block (J, K) itself.
+  BorderedBandCholesky A(n, p, space.periodic() ? p : 0);
   for (int J = 0; J < n; ++J)
     for (int d = 0; d <= p; ++d) {
       if (J + d >= n && !space.periodic()) break;  // a clamped space's band ends at n
       const Eigen::Matrix2d& M = band[static_cast<std::size_t>(J) * (p + 1) + d];
       const int K = (J + d) % n;
-      for (int r = 0; r < 2; ++r)
-        for (int c = d == 0 ? r : 0; c < 2; ++c)  // a diagonal block's lower half mirrors its upper
-          A.add(2 * J + r, 2 * K + c, M(r, c));
+      if (K > J || d == 0) {
+        A.lower(K, J) += M.transpose();
+      } else if (K < J) {
+        A.lower(J, K) += M;
+      } else {  // d = n <= p: a diagonal block again, its both off-diagonal entries below
+        Eigen::Matrix2d& D = A.lower(J, J);
+        D(0, 0) += M(0, 0), D(1, 0) += M(0, 1), D(1, 0) += M(1, 0), D(1, 1) += M(1, 1);
+      }
     }
   if (!A.factorize()) throw NumericalError("degree-limited fit: singular system");
   const Eigen::VectorXd y = A.solve(rhs);
