@@ -121,6 +121,12 @@ Samples samples(const SplineSpace& space, const ProfileTable& R, int per_span) {
   return out;
 }
 
+// The samples summed before their share is added to the band: up to a whole span's (2p + 2 at
+// most 14 up to degree 6), whose control values are the same. Measured on the roller's
+// conversion at 1 µm: 93.5 → 89.5 M instructions (4 at a time 90.5 M, 8 89.9 M), the same
+// control points on the 66 peer_counts rows.
+constexpr std::size_t kGroup = 16;
+
 // Weighted least squares on the samples (normal equations, Cholesky; the unknowns x_j, y_j
 // interleaved so that the system is banded apart from the periodic wrap).
 Eigen::MatrixXd solve(const SplineSpace& space, const std::vector<Sample>& ss,
@@ -134,20 +140,40 @@ Eigen::MatrixXd solve(const SplineSpace& space, const std::vector<Sample>& ss,
     return band[static_cast<std::size_t>(J) * (p + 1) + d];
   };
   const Eigen::Matrix2d& S = space.reflection();
-  for (const Sample& s : ss) {
-    const Eigen::Matrix2d B =
-        s.weight * (s.direction * s.direction.transpose() + slide * Eigen::Matrix2d::Identity());
-    const Eigen::Vector2d Bp =
-        s.weight * (s.direction * s.direction.dot(s.point) + slide * s.anchor);
+  // Sample s's share of the normal equations: its weighted matrix and right-hand side.
+  const auto normal = [slide](const Sample& s, Eigen::Matrix2d& B, Eigen::Vector2d& Bp) {
+    B = s.weight * (s.direction * s.direction.transpose() + slide * Eigen::Matrix2d::Identity());
+    Bp = s.weight * (s.direction * s.direction.dot(s.point) + slide * s.anchor);
+  };
+  for (std::size_t i = 0; i < ss.size();) {
+    const Sample& s = ss[i];
     if (!space.mirrored()) {  // the values in order (periodic: wrapping), none reflected
+      // Up to kGroup samples of one span summed before they are added: a fraction of the band's
+      // loads and stores.
+      std::size_t g = 1;
+      while (g < kGroup && i + g < ss.size() && ss[i + g].first_value == s.first_value) ++g;
+      Eigen::Matrix2d B[kGroup];
+      Eigen::Vector2d Bp[kGroup];
+      for (std::size_t q = 0; q < g; ++q) normal(ss[i + q], B[q], Bp[q]);
       for (int j = 0; j <= p; ++j) {
         const int J = following(s.first_value, j, n);
-        rhs.segment<2>(2 * J) += s.N[j] * Bp;
+        Eigen::Vector2d v = s.N[j] * Bp[0];
+        for (std::size_t q = 1; q < g; ++q) v += ss[i + q].N[j] * Bp[q];
+        rhs.segment<2>(2 * J) += v;
         Eigen::Matrix2d* row = &block(J, 0);
-        for (int k = j; k <= p; ++k) row[k - j] += (s.N[j] * s.N[k]) * B;
+        for (int k = j; k <= p; ++k) {
+          Eigen::Matrix2d M = (s.N[j] * s.N[k]) * B[0];
+          for (std::size_t q = 1; q < g; ++q) M += (ss[i + q].N[j] * ss[i + q].N[k]) * B[q];
+          row[k - j] += M;
+        }
       }
+      i += g;
       continue;
     }
+    ++i;
+    Eigen::Matrix2d B;
+    Eigen::Vector2d Bp;
+    normal(s, B, Bp);
     int value[kMaxDegree + 1];
     bool reflected[kMaxDegree + 1];
     for (int j = 0; j <= p; ++j) {
