@@ -1,5 +1,6 @@
 #include "src/nurbs/basis.h"
 
+#include <Eigen/Core>
 #include <algorithm>
 
 namespace polarform {
@@ -25,7 +26,27 @@ void basis_funs_on_span(int span, const double* u, int count, int p, const Knots
   double inverse[kMaxDegree + 1][kMaxDegree + 1];
   for (int j = 1; j <= p; ++j)
     for (int r = 0; r < j; ++r) inverse[j][r] = 1.0 / (U[span + r + 1] - U[span + 1 - j + r]);
-  for (int i = 0; i < count; ++i, N += p + 1) {
+  // Two parameters at a time, one in each lane: the same operations on each as one at a time.
+  using Pair = Eigen::Array2d;
+  int i = 0;
+  for (; i + 1 < count; i += 2, N += 2 * (p + 1)) {
+    const Pair t(u[i], u[i + 1]);
+    Pair n[kMaxDegree + 1], left[kMaxDegree + 1], right[kMaxDegree + 1];
+    n[0] = 1.0;
+    for (int j = 1; j <= p; ++j) {
+      left[j] = t - U[span + 1 - j];
+      right[j] = U[span + j] - t;
+      Pair saved = Pair::Zero();
+      for (int r = 0; r < j; ++r) {
+        const Pair temp = n[r] * inverse[j][r];
+        n[r] = saved + right[r + 1] * temp;
+        saved = left[j - r] * temp;
+      }
+      n[j] = saved;
+    }
+    for (int r = 0; r <= p; ++r) N[r] = n[r](0), N[p + 1 + r] = n[r](1);
+  }
+  for (; i < count; ++i, N += p + 1) {
     double left[kMaxDegree + 1], right[kMaxDegree + 1];
     N[0] = 1.0;
     for (int j = 1; j <= p; ++j) {
