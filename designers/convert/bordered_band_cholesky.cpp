@@ -57,27 +57,31 @@ bool BorderedBandCholesky::factorize() {
   inverse_diagonal_.assign(2 * static_cast<std::size_t>(size_), 0.0);
   for (int I = 0; I < n_; ++I)
     for (int J = std::max(0, I - w_); J <= I; ++J) {
-      Eigen::Matrix2d& S = band(I, J);
+      Eigen::Matrix2d S = band(I, J);  // a local: no store through the loop's reads
       for (int K = std::max(0, I - w_); K < J; ++K) subtract(S, band(I, K), band(J, K));
       if (J < I)
         divide(S, band(J, J), J);
       else if (!root(S, I))
         return false;
+      band(I, J) = S;
     }
   for (int R = 0; R < m_; ++R) {
     Eigen::Matrix2d* B = &border(R, 0);
     for (int J = 0; J < n_; ++J) {
-      for (int K = std::max(0, J - w_); K < J; ++K) subtract(B[J], B[K], band(J, K));
-      divide(B[J], band(J, J), J);
+      Eigen::Matrix2d S = B[J];
+      for (int K = std::max(0, J - w_); K < J; ++K) subtract(S, B[K], band(J, K));
+      divide(S, band(J, J), J);
+      B[J] = S;
     }
     for (int C = 0; C <= R; ++C) {
       const Eigen::Matrix2d* Bc = &border(C, 0);
-      Eigen::Matrix2d& S = B[n_ + C];
+      Eigen::Matrix2d S = B[n_ + C];
       for (int K = 0; K < n_ + C; ++K) subtract(S, B[K], Bc[K]);
       if (C < R)
         divide(S, Bc[n_ + C], n_ + C);
       else if (!root(S, n_ + R))
         return false;
+      B[n_ + C] = S;
     }
   }
   return true;
