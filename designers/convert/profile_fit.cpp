@@ -102,12 +102,17 @@ Samples samples(const SplineSpace& space, const ProfileTable& R, int per_span) {
     for (int k = 0; k < per_span; ++k) t[k] = b[j] + (b[j + 1] - b[j]) * (k + 0.5) / per_span;
     double* N = &out.basis[static_cast<std::size_t>(j) * per_span * (p + 1)];
     const int first = space.basis_on_span(j, t.data(), per_span, N);
+    // e_r at the samples, turned from one to the next by the angle between them (the rounding
+    // grows by about an ulp per sample).
+    const double step = (b[j + 1] - b[j]) / per_span;
+    const double cos_step = std::cos(step), sin_step = std::sin(step);
+    Eigen::Vector2d er(std::cos(t[0]), std::sin(t[0]));
     for (int k = 0; k < per_span; ++k) {
       Sample& s = out.list[static_cast<std::size_t>(j * per_span + k)];
       s.t = t[k];
       double d[2];
       R.derivatives(s.t, d);
-      const Eigen::Vector2d er(std::cos(s.t), std::sin(s.t)), et(-er.y(), er.x());
+      const Eigen::Vector2d et(-er.y(), er.x());
       s.radial = er;
       s.point = d[0] * er;
       // ρ moves by e_r·δ and ψ by e_θ·δ / R, so |ρ − R(ψ)| by (e_r − R'/R e_θ)·δ.
@@ -116,6 +121,8 @@ Samples samples(const SplineSpace& space, const ProfileTable& R, int per_span) {
       s.N = N + k * (p + 1);
       s.first = first;
       s.first_value = space.value(first);
+      er = Eigen::Vector2d(cos_step * er.x() - sin_step * er.y(),
+                           sin_step * er.x() + cos_step * er.y());
     }
   }
   return out;
@@ -259,8 +266,13 @@ Eigen::Vector2d curve_point(const Sample& s, const Eigen::MatrixXd& coefs,
                             const SplineSpace& space) {
   Eigen::Vector2d c = Eigen::Vector2d::Zero(), reflected = Eigen::Vector2d::Zero();
   if (!space.mirrored()) {
-    for (int j = 0; j <= space.degree(); ++j)
-      c += s.N[j] * coefs.col(following(s.first_value, j, space.size()));
+    const int p = space.degree();
+    if (s.first_value + p < space.size()) {  // the values side by side in coefs
+      const double* x = coefs.data() + 2 * static_cast<std::ptrdiff_t>(s.first_value);
+      for (int j = 0; j <= p; ++j) c += s.N[j] * Eigen::Map<const Eigen::Vector2d>(x + 2 * j);
+      return c;
+    }
+    for (int j = 0; j <= p; ++j) c += s.N[j] * coefs.col(following(s.first_value, j, space.size()));
     return c;
   }
   for (int j = 0; j <= space.degree(); ++j)
