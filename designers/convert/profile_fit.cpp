@@ -5,7 +5,6 @@
 #include <limits>
 
 #include "designers/convert/bordered_band_cholesky.h"
-#include "designers/convert/polar_function.h"
 #include "src/error.h"
 
 namespace polarform {
@@ -91,6 +90,16 @@ std::vector<Held> held(const SplineSpace& space, const ProfileTable& R) {
   return out;
 }
 
+// The unit vectors e_r at t0, t0 + step, t0 + 2·step, …, each turned from the last: one sincos
+// per span instead of one per point (the rounding grows by about an ulp per turn).
+struct RadialSteps {
+  RadialSteps(double t0, double step)
+      : e(std::cos(t0), std::sin(t0)), c(std::cos(step)), s(std::sin(step)) {}
+  void next() { e = Eigen::Vector2d(c * e.x() - s * e.y(), s * e.x() + c * e.y()); }
+  Eigen::Vector2d e;
+  double c, s;
+};
+
 Samples samples(const SplineSpace& space, const ProfileTable& R, int per_span) {
   Samples out;
   const std::vector<double>& b = space.breaks();
@@ -102,16 +111,13 @@ Samples samples(const SplineSpace& space, const ProfileTable& R, int per_span) {
     for (int k = 0; k < per_span; ++k) t[k] = b[j] + (b[j + 1] - b[j]) * (k + 0.5) / per_span;
     double* N = &out.basis[static_cast<std::size_t>(j) * per_span * (p + 1)];
     const int first = space.basis_on_span(j, t.data(), per_span, N);
-    // e_r at the samples, turned from one to the next by the angle between them (the rounding
-    // grows by about an ulp per sample).
-    const double step = (b[j + 1] - b[j]) / per_span;
-    const double cos_step = std::cos(step), sin_step = std::sin(step);
-    Eigen::Vector2d er(std::cos(t[0]), std::sin(t[0]));
-    for (int k = 0; k < per_span; ++k) {
+    RadialSteps radial(t[0], (b[j + 1] - b[j]) / per_span);
+    for (int k = 0; k < per_span; ++k, radial.next()) {
       Sample& s = out.list[static_cast<std::size_t>(j * per_span + k)];
       s.t = t[k];
       double d[2];
       R.derivatives(s.t, d);
+      const Eigen::Vector2d& er = radial.e;
       const Eigen::Vector2d et(-er.y(), er.x());
       s.radial = er;
       s.point = d[0] * er;
@@ -121,8 +127,6 @@ Samples samples(const SplineSpace& space, const ProfileTable& R, int per_span) {
       s.N = N + k * (p + 1);
       s.first = first;
       s.first_value = space.value(first);
-      er = Eigen::Vector2d(cos_step * er.x() - sin_step * er.y(),
-                           sin_step * er.x() + cos_step * er.y());
     }
   }
   return out;
@@ -344,10 +348,12 @@ std::vector<double> span_errors(const SplineSpace& space, const Eigen::MatrixXd&
   for (int j = 0; j < space.spans(); ++j) {
     for (int k = 0; k <= per_span; ++k) t[k] = b[j] + (b[j + 1] - b[j]) * k / per_span;
     const int first = space.basis_on_span(j, t.data(), per_span + 1, N.data());
-    for (int k = 0; k <= per_span; ++k) {
+    // ψ of each point measured from e_r at its parameter.
+    RadialSteps radial(t[0], (b[j + 1] - b[j]) / per_span);
+    for (int k = 0; k <= per_span; ++k, radial.next()) {
       const Eigen::Vector2d c =
           space.point(coefs, first, &N[static_cast<std::size_t>(k) * (p + 1)]);
-      out[j] = std::max(out[j], std::abs(c.norm() - R(polar_angle_near(c.x(), c.y(), t[k]))));
+      out[j] = std::max(out[j], std::abs(c.norm() - R(t[k] + angle_from(c, radial.e))));
     }
   }
   return out;
