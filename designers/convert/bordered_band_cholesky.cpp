@@ -16,10 +16,8 @@ BorderedBandCholesky::BorderedBandCholesky(int blocks, int bandwidth, int border
   border_.assign(static_cast<std::size_t>(m_) * size_, Eigen::Matrix2d::Zero());
 }
 
-Eigen::Matrix2d& BorderedBandCholesky::lower(int I, int J) {
-  if (!(J >= 0 && J <= I && I < size_) || (I < n_ && I - J > w_))
-    throw InputError("bordered band Cholesky: block outside the band");
-  return I >= n_ ? border(I - n_, J) : band(I, J);
+void BorderedBandCholesky::outside_band() {
+  throw InputError("bordered band Cholesky: block outside the band");
 }
 
 void BorderedBandCholesky::subtract(Eigen::Matrix2d& S, const Eigen::Matrix2d& X,

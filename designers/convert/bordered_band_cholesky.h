@@ -21,7 +21,10 @@ class BorderedBandCholesky {
 
   // Block (I, J) of A's lower triangle, I >= J, within the band or the border (InputError
   // otherwise); zero until set. Of a diagonal block only the lower triangle counts.
-  Eigen::Matrix2d& lower(int I, int J);
+  Eigen::Matrix2d& lower(int I, int J) {
+    if (!(J >= 0 && J <= I && I < size_) || (I < n_ && I - J > w_)) outside_band();
+    return I >= n_ ? border(I - n_, J) : band(I, J);
+  }
   // Factorises A in place; false when A is not (numerically) positive definite.
   bool factorize();
   // x with A·x = b (2N entries), after factorize().
@@ -40,6 +43,7 @@ class BorderedBandCholesky {
   const Eigen::Matrix2d& border(int R, int J) const {
     return border_[static_cast<std::size_t>(R) * size_ + J];
   }
+  [[noreturn]] static void outside_band();
   // S −= X·Yᵀ, entry by entry in the scalar order (X's first column, then its second).
   static void subtract(Eigen::Matrix2d& S, const Eigen::Matrix2d& X, const Eigen::Matrix2d& Y);
   // S ← S·L(J, J)⁻ᵀ by forward substitution: an off-diagonal block of L from what is left of A's.

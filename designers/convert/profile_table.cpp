@@ -77,20 +77,4 @@ double ProfileTable::wrap(double psi) const {
   return std::clamp(psi, start_, end_);
 }
 
-void ProfileTable::derivatives(double psi, double* out) const {
-  psi = wrap(psi);
-  const auto k =
-      std::min(static_cast<std::size_t>(std::max((psi - start_) * inverse_bucket_width_, 0.0)),
-               bucket_.size() - 1);
-  std::size_t i = bucket_[k];
-  while (i > 0 && at_[i] > psi) --i;  // k rounded up past a bucket's start
-  while (i + 2 < at_.size() && at_[i + 1] <= psi) ++i;
-  i = std::min(i, at_.size() - 2);
-  const Interval& I = intervals_[i];
-  const double t = (psi - at_[i]) * I.inverse_h;
-  const double* c = I.c;
-  out[0] = c[0] + t * (c[1] + t * (c[2] + t * (c[3] + t * (c[4] + t * c[5]))));
-  out[1] = (c[1] + t * (2 * c[2] + t * (3 * c[3] + t * (4 * c[4] + t * 5 * c[5])))) * I.inverse_h;
-}
-
 }  // namespace polarform

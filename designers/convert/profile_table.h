@@ -5,6 +5,8 @@
 // takes; the converter still verifies its results against R itself.
 #pragma once
 
+#include <algorithm>
+#include <cstddef>
 #include <vector>
 
 #include "designers/convert/polar_function.h"
@@ -18,7 +20,22 @@ class ProfileTable {
   explicit ProfileTable(const PolarFunction& R, int intervals = 4096);
 
   // R(ψ) and R'(ψ) into out[0..1]; ψ wrapped into the domain (closed) or clamped to it (open).
-  void derivatives(double psi, double* out) const;
+  // Inline: the fits' inner loops call it for every sample.
+  void derivatives(double psi, double* out) const {
+    if (!(psi >= start_ && psi <= end_)) psi = wrap(psi);
+    const auto k =
+        std::min(static_cast<std::size_t>(std::max((psi - start_) * inverse_bucket_width_, 0.0)),
+                 bucket_.size() - 1);
+    std::size_t i = bucket_[k];
+    while (i > 0 && at_[i] > psi) --i;  // k rounded up past a bucket's start
+    while (i + 2 < at_.size() && at_[i + 1] <= psi) ++i;
+    i = std::min(i, at_.size() - 2);
+    const Interval& I = intervals_[i];
+    const double t = (psi - at_[i]) * I.inverse_h;
+    const double* c = I.c;
+    out[0] = c[0] + t * (c[1] + t * (c[2] + t * (c[3] + t * (c[4] + t * c[5]))));
+    out[1] = (c[1] + t * (2 * c[2] + t * (3 * c[3] + t * (4 * c[4] + t * 5 * c[5])))) * I.inverse_h;
+  }
   double operator()(double psi) const {
     double d[2];
     derivatives(psi, d);
