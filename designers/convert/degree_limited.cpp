@@ -384,7 +384,8 @@ LimitedCurve fit_by_need(const PolarFunction& R, const ProfileTable& table, cons
   // 2^(p+4)·tol ends them: tried in the earlier order (smallest neighbouring span error first) on
   // the 66 peer_counts rows, such removals met the tolerance in 9 of 525 tries. The trial fits
   // give up their Lawson steps early when they are far off (ProfileFitOptions::target).
-  // Tries begun beside others and no longer wanted: waited for on leaving (by then long done).
+  // Removal tries begun beside others and no longer wanted (below): waited for only on leaving,
+  // by when they are long done.
   std::vector<Task<std::optional<Fit>>> abandoned;
   if (place.shape.ends == Ends::mirrored) {
     const Shape smooth{Ends::mirrored_smooth, place.shape.multiple};

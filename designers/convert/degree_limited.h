@@ -65,9 +65,10 @@ enum class Mirror { none, at_end };
 // `effort.finalists` have met the tolerance and no degree left predicts fewer control points than
 // the best of them, and the verified curve with the fewest control points kept (the lower degree
 // among equals). The degrees' placements and the finalists' fits are tasks of their own
-// (task_pool.h); R's derivatives must be safe to call concurrently (every PolarFunction's
-// are: pure functions of immutable data). Throws NumericalError when every degree fails, or when
-// `stop` is requested (between two fits).
+// (task_pool.h), and each knot-removal try has the next one run beside it (kept only if it fails:
+// the result is the same as one try at a time); R's derivatives must be safe to call concurrently
+// (every PolarFunction's are: pure functions of immutable data). Throws NumericalError when every
+// degree fails, or when `stop` is requested (between two fits).
 LimitedCurve fewest_control_points(const PolarFunction& R, const std::vector<int>& degrees,
                                    double tol, const LimitedEffort& effort = {},
                                    std::stop_token stop = {}, Mirror mirror = Mirror::none);
