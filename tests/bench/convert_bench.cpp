@@ -1,12 +1,13 @@
 // Benchmarks of the cam conversion path: synthesis + conversion + verification of the roller
 // example at 1 µm (issue 14's target: <= 5 ms; with the refit that makes the profile compact it
-// measured 5.3–6.1 ms wall (medians of 5, as the VM's speed varied; single runs from 4.6 ms) on
-// the 2-core CI machine for 22 control points — the refit's degrees and fits run as tasks on
-// both cores beside the product C = F·B, which alone takes 1.4–1.5 ms; callgrind counts 102 M
-// instructions for the whole program run, about 30 M of them the program's start, against 260 M
-// before the fits got cheaper, the placement kept its best round and the knot removals went the
-// most removable first), one UI design update at 10 µm (target < 2 ms, measured 4.2–5.3 ms) and
-// the degree-3 profile at 1 µm (8.2–9.6 ms).
+// measured 4.4–4.9 ms wall on the 2-core CI machine (medians of 5; single runs from 4.1 ms; the
+// VM's speed varies by ±15 %, and 1a9a818 measured 5.7–5.9 ms in the same periods) for 23 control
+// points — the refit's degrees, fits and knot-removal tries run as tasks on both cores beside the
+// product C = F·B, which alone takes 1.4 ms; callgrind counts 84 M instructions for the whole
+// program run, about 30 M of them the program's start, against 103 M before the block Cholesky,
+// the span-wise assembly and the R⁗ knots, and 260 M before the fits got cheaper, the placement
+// kept its best round and the knot removals went the most removable first), one UI design update
+// at 10 µm (target < 2 ms, measured 3.5–4.7 ms) and the degree-3 profile at 1 µm (7.2–8.3 ms).
 #include <benchmark/benchmark.h>
 
 #include <numbers>

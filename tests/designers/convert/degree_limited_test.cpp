@@ -154,32 +154,46 @@ TEST(DegreeLimited, KnotsByNeedBeatTheUniformSplineThroughPoints) {
     }
 }
 
-// A jump of R's third derivative is a knot of multiplicity p − 2, where the curve is C2 as R is
-// (and its third derivative jumps too); a breakpoint where R is smooth need not be a knot.
-TEST(DegreeLimited, AJumpOfTheThirdDerivativeIsAKnotAPlainBreakpointNeedNotBe) {
-  // r = 50 + 2|sin ψ|³, closed: C2, its third derivative jumps (−12 to 12) at ψ = π; the
-  // breakpoint listed at ψ = 1 is smooth.
+// r = 50 + 2σ·g(ψ), σ = 1 before π and −1 after, closed, with breakpoints listed at ψ = 1 (where
+// r is smooth) and π; `g` writes g, g', g'', g‴ at (sin ψ, cos ψ).
+PolarFunction flipped_at_pi(void (*g)(double s, double c, double* out)) {
   PolarFunction R;
   R.start = 0.0;
   R.end = 2 * std::numbers::pi;
   R.breakpoints = {1.0, std::numbers::pi};
-  R.derivatives = [](double t, int d, double* out) {
-    const double s = std::sin(t), c = std::cos(t), sigma = t < std::numbers::pi ? 1.0 : -1.0;
-    const double all[4] = {50 + 2 * sigma * s * s * s, 6 * sigma * s * s * c,
-                           2 * sigma * (6 * s * c * c - 3 * s * s * s),
-                           2 * sigma * (6 * c * c * c - 21 * s * s * c)};
-    for (int k = 0; k <= d; ++k) out[k] = all[k];
+  R.derivatives = [g](double t, int d, double* out) {
+    const double sigma = t < std::numbers::pi ? 1.0 : -1.0;
+    double all[4];
+    g(std::sin(t), std::cos(t), all);
+    for (int k = 0; k <= d; ++k) out[k] = (k == 0 ? 50.0 : 0.0) + 2 * sigma * all[k];
   };
+  return R;
+}
+
+// The multiplicity of the curve's knot at π (0 if none), and whether ψ = 1 is a knot.
+std::pair<int, bool> knots_at_pi_and_one(const NurbsCurve2d& c) {
+  int at_pi = 0;
+  bool at_one = false;
+  for (const Breakpoint& k : breakpoints(c.knots())) {
+    if (k.value == std::numbers::pi) at_pi = k.multiplicity;
+    at_one = at_one || k.value == 1.0;
+  }
+  return {at_pi, at_one};
+}
+
+// A jump of R's third derivative is a knot of multiplicity p − 2, where the curve is C2 as R is
+// (and its third derivative jumps too); a breakpoint where R is smooth need not be a knot.
+TEST(DegreeLimited, AJumpOfTheThirdDerivativeIsAKnotAPlainBreakpointNeedNotBe) {
+  // r = 50 + 2σ sin³ψ: C2, its third derivative jumps (−12 to 12) at ψ = π.
+  const PolarFunction R = flipped_at_pi([](double s, double c, double* out) {
+    out[0] = s * s * s, out[1] = 3 * s * s * c, out[2] = 6 * s * c * c - 3 * s * s * s,
+    out[3] = 6 * c * c * c - 21 * s * s * c;
+  });
   for (int p : {3, 4, 5}) {
     SCOPED_TRACE("degree " + std::to_string(p));
     const LimitedCurve c = approximate_polar_curve(R, p, 1e-4);
     EXPECT_LE(dense_distance(c.curve, R), 1e-4);
-    int at_pi = 0;
-    bool at_one = false;
-    for (const Breakpoint& k : breakpoints(c.curve.knots())) {
-      if (k.value == std::numbers::pi) at_pi = k.multiplicity;
-      at_one = at_one || k.value == 1.0;
-    }
+    const auto [at_pi, at_one] = knots_at_pi_and_one(c.curve);
     EXPECT_EQ(at_pi, std::max(1, p - 2));
     EXPECT_FALSE(at_one);
     if (p >= 4) {
@@ -195,37 +209,27 @@ TEST(DegreeLimited, AJumpOfTheThirdDerivativeIsAKnotAPlainBreakpointNeedNotBe) {
 // A jump of R's fourth derivative (a 4-5-6-7 rise's ends; R gives derivatives up to the third) is a
 // knot of multiplicity p − 3 from degree 4 on, where the curve is C3 as R is.
 TEST(DegreeLimited, AJumpOfTheFourthDerivativeIsAKnotFromDegreeFourOn) {
-  // r = 50 + 2 σ sin⁴ψ, σ = ±1 on either side of π, closed: C3, its fourth derivative jumps (24 to
-  // −24) at ψ = π and across the seam; the breakpoint listed at ψ = 1 is smooth.
-  PolarFunction R;
-  R.start = 0.0;
-  R.end = 2 * std::numbers::pi;
-  R.breakpoints = {1.0, std::numbers::pi};
-  R.derivatives = [](double t, int d, double* out) {
-    const double s = std::sin(t), c = std::cos(t), sigma = t < std::numbers::pi ? 1.0 : -1.0;
-    const double all[4] = {50 + 2 * sigma * s * s * s * s, 8 * sigma * s * s * s * c,
-                           2 * sigma * (12 * s * s * c * c - 4 * s * s * s * s),
-                           2 * sigma * (24 * s * c * c * c - 40 * s * s * s * c)};
-    for (int k = 0; k <= d; ++k) out[k] = all[k];
-  };
+  // r = 50 + 2σ sin⁴ψ: C3, its fourth derivative jumps (48 to −48) at ψ = π and across the seam.
+  const PolarFunction R = flipped_at_pi([](double s, double c, double* out) {
+    out[0] = s * s * s * s, out[1] = 4 * s * s * s * c,
+    out[2] = 12 * s * s * c * c - 4 * s * s * s * s,
+    out[3] = 24 * s * c * c * c - 40 * s * s * s * c;
+  });
   for (int p : {3, 4, 5, 6}) {
     SCOPED_TRACE("degree " + std::to_string(p));
     const LimitedCurve c = approximate_polar_curve(R, p, 1e-4);
     EXPECT_LE(dense_distance(c.curve, R), 1e-4);
-    int at_pi = 0;
-    bool at_one = false;
-    for (const Breakpoint& k : breakpoints(c.curve.knots())) {
-      if (k.value == std::numbers::pi) at_pi = k.multiplicity;
-      at_one = at_one || k.value == 1.0;
+    const auto [at_pi, at_one] = knots_at_pi_and_one(c.curve);
+    if (p >= 4) {
+      EXPECT_EQ(at_pi, p - 3);
     }
-    if (p >= 4) EXPECT_EQ(at_pi, p - 3);
     EXPECT_FALSE(at_one);
     if (p >= 5) {
       const double h = 1e-9;
       const auto left = c.curve.derivatives(std::numbers::pi - h, 4);
       const auto right = c.curve.derivatives(std::numbers::pi + h, 4);
       EXPECT_LE((left[3] - right[3]).norm(), 1e-4 * left[3].norm());
-      EXPECT_GT((left[4] - right[4]).norm(), 1.0);  // R⁗ jumps by 48
+      EXPECT_GT((left[4] - right[4]).norm(), 1.0);  // R⁗ jumps by 96
     }
   }
 }
