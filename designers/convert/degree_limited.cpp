@@ -406,12 +406,16 @@ LimitedCurve fit_by_need(const PolarFunction& R, const ProfileTable& table, cons
     };
     take_bounds();
     const double hopeless = std::ldexp(kShare * tol, p + 4);
-    // The untried break of the least bound, unless that is beyond hopeless.
-    const auto least = [&]() -> std::optional<std::vector<std::pair<double, double>>::iterator> {
+    // The untried break of the least bound, unless that is beyond hopeless; and one taken.
+    const auto least = [&]() -> std::optional<double> {
       const auto l = std::min_element(untried.begin(), untried.end(),
                                       [](auto& x, auto& y) { return x.second < y.second; });
       if (l == untried.end() || !(l->second <= hopeless)) return std::nullopt;
-      return l;
+      return l->first;
+    };
+    const auto take = [&](double at) {
+      untried.erase(
+          std::find_if(untried.begin(), untried.end(), [at](auto& u) { return u.first == at; }));
     };
     // Best's breaks without `at`.
     const auto without = [&](double at) {
@@ -427,29 +431,26 @@ LimitedCurve fit_by_need(const PolarFunction& R, const ProfileTable& table, cons
     for (std::size_t tries = 0; tries < effort.removal_tries; ++tries) {
       throw_if_stopped(stop);
       if (best.space.spans() - 1 < fewest) break;
-      const auto l = least();
-      if (!l) break;
-      const double at = (*l)->first;
-      untried.erase(*l);
+      const std::optional<double> at = least();
+      if (!at) break;
+      take(*at);
       // The try after this one (the next least bound, as if this one fails) runs beside it, a
       // task with inputs of its own, and counts only if this one fails: the same tries in the
       // same order as one at a time. Abandoned when this one succeeds (skipped if not started).
       const auto wanted = std::make_shared<std::atomic<bool>>(true);
       std::optional<std::pair<double, Task<std::optional<Fit>>>> next;
       if (const auto n = least(); n && tries + 1 < effort.removal_tries)
-        next.emplace((*n)->first,
-                     run_task([fewer = without((*n)->first), shape = shape_of(best.space), wanted,
-                               &table, p, trial, tol]() -> std::optional<Fit> {
-                       if (!*wanted) return std::nullopt;
-                       return fit_on(fewer, shape, table, p, trial, kShare * tol);
-                     }));
-      Fit c = fit_on(without(at), shape_of(best.space), table, p, trial, kShare * tol);
+        next.emplace(*n, run_task([fewer = without(*n), shape = shape_of(best.space), wanted,
+                                   &table, p, trial, tol]() -> std::optional<Fit> {
+          if (!*wanted) return std::nullopt;
+          return fit_on(fewer, shape, table, p, trial, kShare * tol);
+        }));
+      Fit c = fit_on(without(*at), shape_of(best.space), table, p, trial, kShare * tol);
       if (accept(c)) {
         if (next) *wanted = false, abandoned.push_back(std::move(next->second));
       } else if (next) {
         ++tries;
-        untried.erase(std::find_if(untried.begin(), untried.end(),
-                                   [&](auto& u) { return u.first == next->first; }));
+        take(next->first);
         Fit d = *next->second.get();
         accept(d);
       }
