@@ -170,68 +170,56 @@ PolarFunction flipped_at_pi(void (*g)(double s, double c, double* out)) {
   return R;
 }
 
-// The multiplicity of the curve's knot at π (0 if none), and whether ψ = 1 is a knot.
-std::pair<int, bool> knots_at_pi_and_one(const NurbsCurve2d& c) {
-  int at_pi = 0;
-  bool at_one = false;
-  for (const Breakpoint& k : breakpoints(c.knots())) {
-    if (k.value == std::numbers::pi) at_pi = k.multiplicity;
-    at_one = at_one || k.value == 1.0;
+// For R from flipped_at_pi whose derivative of order k jumps at π (by more than 1 in the
+// curve's k-th derivative), at each of `degrees`: the fit meets 1e-4 mm by dense sampling, ψ = 1
+// is no knot, and from degree k on π is a knot of multiplicity p − (k − 1), where the curve is
+// C^(k−1) (its (k−1)-th derivative within 1e-4 relative) and, from degree k + 1 on, its k-th
+// derivative jumps.
+void expect_knot_where_order_jumps(const PolarFunction& R, int k, std::vector<int> degrees) {
+  for (int p : degrees) {
+    SCOPED_TRACE("degree " + std::to_string(p));
+    const LimitedCurve c = approximate_polar_curve(R, p, 1e-4);
+    EXPECT_LE(dense_distance(c.curve, R), 1e-4);
+    int at_pi = 0;
+    bool at_one = false;
+    for (const Breakpoint& b : breakpoints(c.curve.knots())) {
+      if (b.value == std::numbers::pi) at_pi = b.multiplicity;
+      at_one = at_one || b.value == 1.0;
+    }
+    EXPECT_FALSE(at_one);
+    if (p < k) continue;
+    EXPECT_EQ(at_pi, p - (k - 1));
+    if (p == k) continue;
+    const double h = 1e-9;
+    const auto left = c.curve.derivatives(std::numbers::pi - h, k);
+    const auto right = c.curve.derivatives(std::numbers::pi + h, k);
+    EXPECT_LE((left[k - 1] - right[k - 1]).norm(), 1e-4 * left[k - 1].norm());
+    EXPECT_GT((left[k] - right[k]).norm(), 1.0);
   }
-  return {at_pi, at_one};
 }
 
 // A jump of R's third derivative is a knot of multiplicity p − 2, where the curve is C2 as R is
 // (and its third derivative jumps too); a breakpoint where R is smooth need not be a knot.
 TEST(DegreeLimited, AJumpOfTheThirdDerivativeIsAKnotAPlainBreakpointNeedNotBe) {
-  // r = 50 + 2σ sin³ψ: C2, its third derivative jumps (−12 to 12) at ψ = π.
+  // r = 50 + 2σ sin³ψ: C2, its third derivative jumps (−12 to 12, by 24) at ψ = π.
   const PolarFunction R = flipped_at_pi([](double s, double c, double* out) {
     out[0] = s * s * s, out[1] = 3 * s * s * c, out[2] = 6 * s * c * c - 3 * s * s * s,
     out[3] = 6 * c * c * c - 21 * s * s * c;
   });
-  for (int p : {3, 4, 5}) {
-    SCOPED_TRACE("degree " + std::to_string(p));
-    const LimitedCurve c = approximate_polar_curve(R, p, 1e-4);
-    EXPECT_LE(dense_distance(c.curve, R), 1e-4);
-    const auto [at_pi, at_one] = knots_at_pi_and_one(c.curve);
-    EXPECT_EQ(at_pi, std::max(1, p - 2));
-    EXPECT_FALSE(at_one);
-    if (p >= 4) {
-      const double h = 1e-9;
-      const auto left = c.curve.derivatives(std::numbers::pi - h, 3);
-      const auto right = c.curve.derivatives(std::numbers::pi + h, 3);
-      EXPECT_LE((left[2] - right[2]).norm(), 1e-4 * left[2].norm());
-      EXPECT_GT((left[3] - right[3]).norm(), 1.0);  // R‴ jumps by 24
-    }
-  }
+  expect_knot_where_order_jumps(R, 3, {3, 4, 5});
 }
 
 // A jump of R's fourth derivative (a 4-5-6-7 rise's ends; R gives derivatives up to the third) is a
 // knot of multiplicity p − 3 from degree 4 on, where the curve is C3 as R is.
 TEST(DegreeLimited, AJumpOfTheFourthDerivativeIsAKnotFromDegreeFourOn) {
-  // r = 50 + 2σ sin⁴ψ: C3, its fourth derivative jumps (48 to −48) at ψ = π and across the seam.
+  // r = 50 + 2σ sin⁴ψ: C3, its fourth derivative jumps (48 to −48, by 96) at ψ = π and across
+  // the seam.
   const PolarFunction R = flipped_at_pi([](double s, double c, double* out) {
     out[0] = s * s * s * s, out[1] = 4 * s * s * s * c,
     out[2] = 12 * s * s * c * c - 4 * s * s * s * s,
     out[3] = 24 * s * c * c * c - 40 * s * s * s * c;
   });
-  for (int p : {3, 4, 5, 6}) {
-    SCOPED_TRACE("degree " + std::to_string(p));
-    const LimitedCurve c = approximate_polar_curve(R, p, 1e-4);
-    EXPECT_LE(dense_distance(c.curve, R), 1e-4);
-    const auto [at_pi, at_one] = knots_at_pi_and_one(c.curve);
-    if (p >= 4) {
-      EXPECT_EQ(at_pi, p - 3);
-    }
-    EXPECT_FALSE(at_one);
-    if (p >= 5) {
-      const double h = 1e-9;
-      const auto left = c.curve.derivatives(std::numbers::pi - h, 4);
-      const auto right = c.curve.derivatives(std::numbers::pi + h, 4);
-      EXPECT_LE((left[3] - right[3]).norm(), 1e-4 * left[3].norm());
-      EXPECT_GT((left[4] - right[4]).norm(), 1.0);  // R⁗ jumps by 96
-    }
-  }
+  expect_knot_where_order_jumps(R, 4, {3, 4, 5, 6});
 }
 
 TEST(DegreeLimited, FewestControlPointsIsTheBestDegreesFitWhateverTheThreadsDo) {
