@@ -173,16 +173,21 @@ int jump_order(const PolarFunction& R, double left_at, double right_at, double h
 // jumps (k >= 1), as smooth as R there; simple where R is smooth (k = 0).
 int multiplicity_for(int k, int p) { return k == 0 ? 1 : std::clamp(p - (k - 1), 1, p); }
 
-// The breakpoints of R where a derivative of order 1..min(p, 4) jumps, with that order: there a
-// knot lets the spline follow the jump; elsewhere (a breakpoint of a smooth R) the knots are placed
-// by need only.
-std::vector<std::pair<double, int>> jump_breakpoints(const PolarFunction& R, int p) {
-  std::vector<std::pair<double, int>> out;
+// The orders of R's derivative jumps (jump_order), taken once for every degree: across a closed
+// R's seam, and at each breakpoint where one jumps. There a knot lets the spline follow the jump;
+// elsewhere (a breakpoint of a smooth R) the knots are placed by need only.
+struct Jumps {
+  int seam = 0;
+  std::vector<std::pair<double, int>> interior;  // (breakpoint, order)
+};
+
+Jumps jumps_of(const PolarFunction& R) {
+  Jumps out;
   const double h = 1e-9 * (R.end - R.start);
+  if (R.closed()) out.seam = jump_order(R, R.end - h, R.start + h, h);
   for (double b : R.breakpoints) {
     if (!(b > R.start && b < R.end)) continue;
-    const int k = jump_order(R, b - h, b + h, h);
-    if (k > 0 && k <= std::min(p, 4)) out.emplace_back(b, k);
+    if (const int k = jump_order(R, b - h, b + h, h); k > 0) out.interior.emplace_back(b, k);
   }
   return out;
 }
@@ -256,22 +261,22 @@ struct Placement {
   double predicted_control_points = 0.0;
 };
 
-Placement place_knots(const PolarFunction& R, Ends ends, const ProfileTable& table, int p,
-                      double tol, const LimitedEffort& effort, const std::stop_token& stop) {
+Placement place_knots(const PolarFunction& R, Ends ends, const Jumps& jumps,
+                      const ProfileTable& table, int p, double tol, const LimitedEffort& effort,
+                      const std::stop_token& stop) {
   Placement out;
   out.degree = p;
   out.shape.ends = ends;
   // A closed R's seam knot as smooth as R there (a cam whose first segment starts a rise at 0°
   // has a jump in R‴ or R″): the clamped curve has p + spans control points whatever the seam's
   // multiplicity, and the constraints it sheds free the fit.
-  const double h = 1e-9 * (R.end - R.start);
-  if (ends == Ends::periodic)
-    out.shape.multiple.seam = multiplicity_for(jump_order(R, R.end - h, R.start + h, h), p);
+  if (ends == Ends::periodic) out.shape.multiple.seam = multiplicity_for(jumps.seam, p);
   out.fixed = {R.start};
-  for (const auto& [b, k] : jump_breakpoints(R, p)) {
-    out.fixed.push_back(b);
-    out.shape.multiple.interior.emplace_back(b, multiplicity_for(k, p));
-  }
+  for (const auto& [b, k] : jumps.interior)
+    if (k <= p) {  // a jump of order k <= p: the spline can follow it
+      out.fixed.push_back(b);
+      out.shape.multiple.interior.emplace_back(b, multiplicity_for(k, p));
+    }
   out.fixed.push_back(R.end);
   const Shape& shape = out.shape;
   // The knots' multiplicities beyond one: control points that do not come with spans.
@@ -507,8 +512,8 @@ LimitedCurve approximate_polar_curve(const PolarFunction& R, int degree, double 
   }
   const ProfileTable table(R, effort.table_intervals);
   const Ends ends = R.closed() ? Ends::periodic : Ends::clamped;
-  return fit_by_need(R, table, place_knots(R, ends, table, degree, tol, effort, {}), tol, effort,
-                     {});
+  return fit_by_need(R, table, place_knots(R, ends, jumps_of(R), table, degree, tol, effort, {}),
+                     tol, effort, {});
 }
 
 LimitedCurve fewest_control_points(const PolarFunction& R, const std::vector<int>& degrees,
@@ -526,10 +531,11 @@ LimitedCurve fewest_control_points(const PolarFunction& R, const std::vector<int
   // the costliest, first, so that the cores finish together.
   std::vector<int> by_cost = degrees;
   std::sort(by_cost.begin(), by_cost.end(), std::greater<>());
+  const Jumps jumps = jumps_of(R);
   std::vector<Task<Placement>> placing;
   for (int degree : by_cost)
-    placing.push_back(
-        run_task([&, degree] { return place_knots(R, ends, table, degree, tol, effort, stop); }));
+    placing.push_back(run_task(
+        [&, degree] { return place_knots(R, ends, jumps, table, degree, tol, effort, stop); }));
   std::vector<Placement> places;
   for (Task<Placement>& f : placing) places.push_back(f.get());
   std::stable_sort(places.begin(), places.end(), [](const Placement& a, const Placement& b) {
