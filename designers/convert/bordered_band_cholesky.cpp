@@ -44,7 +44,6 @@ bool BorderedBandCholesky::root(Eigen::Matrix2d& S, int I) {
   if (!(S(1, 1) > 0)) return false;
   S(1, 1) = std::sqrt(S(1, 1));
   inverse_diagonal_[2 * I + 1] = 1 / S(1, 1);
-  S(0, 1) = 0.0;
   return true;
 }
 
