@@ -167,6 +167,17 @@ TEST(PlateCam, ContourPolarFunctionReproducesTheContour) {
         const double psi = domain_angle(f, c[0]);
         const Eigen::Vector2d back = f(psi) * Eigen::Vector2d(std::cos(psi), std::sin(psi));
         EXPECT_LT((back - c[0]).norm(), 1e-12) << "θ = " << theta;
+        // Up to the second derivative R comes from one curve point taken back to ψ along its
+        // Taylor series, the third from Newton's θ at ψ: the same values.
+        double newton[4];
+        f.derivatives(psi, 3, newton);
+        for (int d = 0; d <= 2; ++d) {
+          double first_order[3];
+          f.derivatives(psi, d, first_order);
+          for (int k = 0; k <= d; ++k)
+            EXPECT_NEAR(first_order[k], newton[k], 1e-12 * std::max(1.0, std::abs(newton[k])))
+                << "derivative " << k << " of " << d << " θ = " << theta;
+        }
         bool near_break = false;
         for (double b : f.breakpoints) near_break |= std::abs(psi - b) < 0.02;
         if (near_break) continue;
