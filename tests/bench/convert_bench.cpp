@@ -1,14 +1,15 @@
 // Benchmarks of the cam conversion path: synthesis + conversion + verification of the roller
 // example at 1 µm (issue 14's target: <= 5 ms; with the refit that makes the profile compact it
-// measured 4.4–4.9 ms wall on the 2-core CI machine (medians; single runs from 4.1 ms) where
-// 1a9a818 took 5.3–5.9 ms in the same periods — the VM's speed varies, and in its slowest periods
-// both take 15–25 % longer — for 23 control points: the refit's degrees, fits and knot-removal
-// tries run as tasks on both cores beside the product C = F·B, which alone takes 1.3–1.4 ms;
-// callgrind counts 84 M instructions for the whole program run, about 30 M of them the program's
-// start, against 103 M before the block Cholesky, the span-wise assembly and the R⁗ knots, and
-// 260 M before the fits got cheaper, the placement kept its best round and the knot removals went
-// the most removable first), one UI design update at 10 µm (target < 2 ms, measured 3.5–4.7 ms)
-// and the degree-3 profile at 1 µm (6.3–8.3 ms).
+// measured 3.4–4.1 ms wall on the 2-core CI machine on 2026-12-06 (medians of 3 and 5
+// repetitions, interleaved runs; 4.4–4.9 ms on the machine of the session before, where 1a9a818
+// took 5.3–5.9 ms in the same periods — the VM's speed varies, and in its slowest periods both
+// take 15–25 % longer) for 23 control points: the refit's degrees, fits and knot-removal tries run
+// as tasks on both cores beside the product C = F·B, which alone takes 1.2–1.4 ms; callgrind
+// counts 83.5 M instructions for the whole program run, about 30 M of them the program's start,
+// against 103 M before the block Cholesky, the span-wise assembly and the R⁗ knots, and 260 M
+// before the fits got cheaper, the placement kept its best round and the knot removals went the
+// most removable first), one UI design update at 10 µm (target < 2 ms, measured 3.0–3.7 ms) and
+// the degree-3 profile at 1 µm (5.4–5.9 ms).
 #include <benchmark/benchmark.h>
 
 #include <numbers>
