@@ -174,15 +174,13 @@ void polar_derivatives(const Jet* xy, int d, double* out) {
   const Jet r = sqrt(xy[0] * xy[0] + xy[1] * xy[1]);
   out[0] = r[0];
   if (d == 0) return;
-  if (d == 1) {
-    out[1] = r[1] / psi_rate(xy);
-    return;
-  }
+  const double p1 = psi_rate(xy), t1 = 1.0 / p1;
+  out[1] = r[1] * t1;
+  if (d == 1) return;
+  // ψ' as a jet: its derivatives enter from R″ on.
   const Jet rate =
       (xy[0] * xy[1].derivative() - xy[1] * xy[0].derivative()) / (xy[0] * xy[0] + xy[1] * xy[1]);
-  const double p1 = rate[0], p2 = rate[1];
-  const double t1 = 1.0 / p1, t2 = -p2 * t1 * t1 * t1;
-  out[1] = r[1] * t1;
+  const double p2 = rate[1], t2 = -p2 * t1 * t1 * t1;
   out[2] = r[2] * t1 * t1 + r[1] * t2;
   if (d == 2) return;
   const double t3 = (3 * p2 * p2 - p1 * rate[2]) * t1 * t1 * t1 * t1 * t1;
