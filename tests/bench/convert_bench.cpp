@@ -1,6 +1,6 @@
 // Benchmarks of the cam conversion path: synthesis + conversion + verification of the roller
 // example at 1 µm (issue 14's target: <= 5 ms; with the refit that makes the profile compact it
-// measured 3.4–4.1 ms wall on the 2-core CI machine on 2026-12-06 (medians of 3 and 5
+// measured 3.1–4.1 ms wall on the 2-core CI machine on 2026-12-06 (medians of 3 and 5
 // repetitions, interleaved runs; 4.4–4.9 ms on the machine of the session before, where 1a9a818
 // took 5.3–5.9 ms in the same periods — the VM's speed varies, and in its slowest periods both
 // take 15–25 % longer) for 23 control points: the refit's degrees, fits and knot-removal tries run
